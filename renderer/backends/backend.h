@@ -1,0 +1,46 @@
+// Backend: where passes run and accumulation lives (CPU threads or a CUDA device). Host-side interface.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "device/scene_arrays.h"
+#include "integrator/frame_params.h"
+
+namespace trazo {
+
+class Backend {
+public:
+    virtual ~Backend() = default;
+
+    virtual std::string name() const = 0;        // "cpu" or "cuda"
+    virtual std::string deviceName() const = 0;  // e.g. "2 threads" or "NVIDIA H100 80GB HBM3"
+
+    // Copies the flattened scene into backend memory (replacing any previous one).
+    virtual void upload(const SceneArrays& arrays) = 0;
+    // (Re)allocates the accumulation buffer for width × height and clears it.
+    virtual void resize(uint32_t width, uint32_t height) = 0;
+    // Clears the sums and counts (no reallocation).
+    virtual void reset() = 0;
+    // Adds passes [firstPass, firstPass + passCount) to every pixel; blocks until done.
+    virtual void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) = 0;
+    // Copies the accumulation buffer (row 0 = top) to the host.
+    virtual void readAccumulation(std::vector<AccumPixel>& out) = 0;
+    // Rays traced since the last reset.
+    virtual uint64_t raysTraced() const = 0;
+};
+
+enum class BackendChoice { Auto, Cpu, Cuda };
+
+// threads = 0: all hardware threads. On failure returns null and says why in `error`
+// (e.g. CUDA requested but not built, or no device). Auto falls back to the CPU.
+std::unique_ptr<Backend> createBackend(BackendChoice choice, unsigned threads, std::string& error);
+
+std::unique_ptr<Backend> createCpuBackend(unsigned threads);
+
+// True when this build has the CUDA backend and a usable device is present; names it.
+bool cudaDeviceAvailable(std::string& deviceName);
+
+}  // namespace trazo

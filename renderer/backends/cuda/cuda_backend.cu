@@ -1,0 +1,165 @@
+// CUDA backend: the same renderSample() as the CPU backend, one thread per pixel, one launch per pass.
+#include <cuda_runtime.h>
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "backends/backend.h"
+#include "integrator/render_sample.h"
+
+namespace trazo {
+
+namespace {
+
+// Throws with the failing call's file:line; Backend methods turn it into a runtime failure (exit 1).
+#define TRAZO_CUDA_CHECK(call)                                                                         \
+    do {                                                                                               \
+        const cudaError_t status_ = (call);                                                            \
+        if (status_ != cudaSuccess)                                                                    \
+            throw std::runtime_error(std::string(__FILE__) + ":" + std::to_string(__LINE__) + ": " + \
+                                     #call + ": " + cudaGetErrorString(status_));                      \
+    } while (0)
+
+__global__ void renderPassKernel(SceneView scene, FrameParams frame, uint32_t pass, AccumPixel* accum,
+                                 unsigned long long* rayCounter) {
+    const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
+    const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
+    uint32_t rays = 0;
+    if (x < frame.camera.width && y < frame.camera.height) {
+        const Vec3 c = renderSample(scene, frame, x, y, pass, rays);
+        AccumPixel& a = accum[(size_t)y * frame.camera.width + x];
+        a.sum += c;
+        a.count += 1.0f;
+    }
+    // One atomic per warp for the ray count.
+    for (int offset = 16; offset > 0; offset /= 2) rays += __shfl_down_sync(0xffffffffu, rays, offset);
+    if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0 && rays) atomicAdd(rayCounter, (unsigned long long)rays);
+}
+
+template <typename T>
+class DeviceArray {
+public:
+    DeviceArray() = default;
+    DeviceArray(const DeviceArray&) = delete;
+    DeviceArray& operator=(const DeviceArray&) = delete;
+    ~DeviceArray() { cudaFree(data_); }
+
+    void assign(const std::vector<T>& host) {
+        if (host.size() > capacity_) {
+            cudaFree(data_);
+            data_ = nullptr;
+            TRAZO_CUDA_CHECK(cudaMalloc(&data_, host.size() * sizeof(T)));
+            capacity_ = host.size();
+        }
+        count_ = host.size();
+        if (count_) TRAZO_CUDA_CHECK(cudaMemcpy(data_, host.data(), count_ * sizeof(T), cudaMemcpyHostToDevice));
+    }
+    ArrayView<T> view() const { return ArrayView<T>{data_, (uint32_t)count_}; }
+
+private:
+    T* data_ = nullptr;
+    size_t count_ = 0, capacity_ = 0;
+};
+
+class CudaBackend final : public Backend {
+public:
+    CudaBackend() {
+        cudaDeviceProp prop{};
+        TRAZO_CUDA_CHECK(cudaGetDeviceProperties(&prop, 0));
+        deviceName_ = prop.name;
+        TRAZO_CUDA_CHECK(cudaMalloc(&rayCounter_, sizeof(unsigned long long)));
+        TRAZO_CUDA_CHECK(cudaMemset(rayCounter_, 0, sizeof(unsigned long long)));
+    }
+    ~CudaBackend() override {
+        cudaFree(accum_);
+        cudaFree(rayCounter_);
+    }
+
+    std::string name() const override { return "cuda"; }
+    std::string deviceName() const override { return deviceName_; }
+
+    void upload(const SceneArrays& a) override {
+        spheres_.assign(a.spheres);
+        boxes_.assign(a.boxes);
+        cylinders_.assign(a.cylinders);
+        objects_.assign(a.objects);
+        materials_.assign(a.materials);
+        pointLights_.assign(a.pointLights);
+        areaLights_.assign(a.areaLights);
+        view_ = SceneView{spheres_.view(),   boxes_.view(),       cylinders_.view(), objects_.view(),
+                          materials_.view(), pointLights_.view(), areaLights_.view(), a.settings, a.features};
+    }
+    void resize(uint32_t width, uint32_t height) override {
+        cudaFree(accum_);
+        accum_ = nullptr;
+        width_ = width;
+        height_ = height;
+        TRAZO_CUDA_CHECK(cudaMalloc(&accum_, pixelCount() * sizeof(AccumPixel)));
+        reset();
+    }
+    void reset() override {
+        TRAZO_CUDA_CHECK(cudaMemset(accum_, 0, pixelCount() * sizeof(AccumPixel)));
+        TRAZO_CUDA_CHECK(cudaMemset(rayCounter_, 0, sizeof(unsigned long long)));
+    }
+    void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override {
+        const dim3 block(16, 16);
+        const dim3 grid((width_ + block.x - 1) / block.x, (height_ + block.y - 1) / block.y);
+        for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
+            renderPassKernel<<<grid, block>>>(view_, frame, pass, accum_, rayCounter_);
+            TRAZO_CUDA_CHECK(cudaGetLastError());
+        }
+        TRAZO_CUDA_CHECK(cudaDeviceSynchronize());
+    }
+    void readAccumulation(std::vector<AccumPixel>& out) override {
+        out.resize(pixelCount());
+        TRAZO_CUDA_CHECK(cudaMemcpy(out.data(), accum_, pixelCount() * sizeof(AccumPixel), cudaMemcpyDeviceToHost));
+    }
+    uint64_t raysTraced() const override {
+        unsigned long long rays = 0;
+        TRAZO_CUDA_CHECK(cudaMemcpy(&rays, rayCounter_, sizeof(rays), cudaMemcpyDeviceToHost));
+        return rays;
+    }
+
+private:
+    size_t pixelCount() const { return (size_t)width_ * height_; }
+
+    std::string deviceName_;
+    DeviceArray<SphereShape> spheres_;
+    DeviceArray<BoxShape> boxes_;
+    DeviceArray<CylinderShape> cylinders_;
+    DeviceArray<ObjectRef> objects_;
+    DeviceArray<MaterialData> materials_;
+    DeviceArray<PointLightData> pointLights_;
+    DeviceArray<AreaLightData> areaLights_;
+    SceneView view_{};
+    AccumPixel* accum_ = nullptr;
+    unsigned long long* rayCounter_ = nullptr;
+    uint32_t width_ = 0, height_ = 0;
+};
+
+}  // namespace
+
+bool cudaDeviceAvailableImpl(std::string& deviceName) {
+    int count = 0;  // not written when the driver is missing
+    const cudaError_t status = cudaGetDeviceCount(&count);
+    if (status != cudaSuccess || count == 0) {
+        deviceName = status != cudaSuccess ? cudaGetErrorString(status) : "no CUDA device found";
+        cudaGetLastError();  // clear the sticky error for later calls
+        return false;
+    }
+    cudaDeviceProp prop{};
+    if (cudaGetDeviceProperties(&prop, 0) != cudaSuccess) return false;
+    deviceName = prop.name;
+    return true;
+}
+
+std::unique_ptr<Backend> createCudaBackend(std::string& error) {
+    try {
+        return std::make_unique<CudaBackend>();
+    } catch (const std::exception& e) {
+        error = e.what();
+        return nullptr;
+    }
+}
+
+}  // namespace trazo

@@ -1,0 +1,76 @@
+// Affine3: a 3x4 affine transform (linear part + translation), for boxes and, later, meshes and CSG.
+#pragma once
+
+#include "core/vec3.h"
+
+namespace trazo {
+
+struct Affine3 {
+    // Rows of the linear part; row i gives output coordinate i.
+    Vec3 row[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    Vec3 translation = {0, 0, 0};
+
+    TRAZO_HD Vec3 applyToVector(Vec3 v) const { return {dot(row[0], v), dot(row[1], v), dot(row[2], v)}; }
+    TRAZO_HD Vec3 applyToPoint(Vec3 p) const { return applyToVector(p) + translation; }
+    // Transposed linear part applied to v; with the inverse transform this maps normals (inverse transpose).
+    TRAZO_HD Vec3 applyTransposeToVector(Vec3 v) const {
+        return row[0] * v.x + row[1] * v.y + row[2] * v.z;
+    }
+};
+
+// this-then-other, i.e. other ∘ first: the result maps p to other(first(p)).
+TRAZO_HD Affine3 then(const Affine3& first, const Affine3& other) {
+    Affine3 r;
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            r.row[i][j] = other.row[i].x * first.row[0][j] + other.row[i].y * first.row[1][j] +
+                          other.row[i].z * first.row[2][j];
+        }
+    }
+    r.translation = other.applyToPoint(first.translation);
+    return r;
+}
+
+TRAZO_HD float determinant(const Affine3& a) { return dot(a.row[0], cross(a.row[1], a.row[2])); }
+
+// Inverse of an affine map; the caller guarantees it is not singular (the readers reject zero scales).
+TRAZO_HD Affine3 inverse(const Affine3& a) {
+    const Vec3 c0 = cross(a.row[1], a.row[2]);
+    const Vec3 c1 = cross(a.row[2], a.row[0]);
+    const Vec3 c2 = cross(a.row[0], a.row[1]);
+    const float invDet = 1.0f / dot(a.row[0], c0);
+    Affine3 r;
+    // The inverse's columns are the cofactor rows; transpose them into rows.
+    r.row[0] = Vec3(c0.x, c1.x, c2.x) * invDet;
+    r.row[1] = Vec3(c0.y, c1.y, c2.y) * invDet;
+    r.row[2] = Vec3(c0.z, c1.z, c2.z) * invDet;
+    r.translation = -r.applyToVector(a.translation);
+    return r;
+}
+
+TRAZO_HD Affine3 makeTranslation(Vec3 t) {
+    Affine3 r;
+    r.translation = t;
+    return r;
+}
+
+TRAZO_HD Affine3 makeScale(Vec3 s) {
+    Affine3 r;
+    r.row[0] = {s.x, 0, 0};
+    r.row[1] = {0, s.y, 0};
+    r.row[2] = {0, 0, s.z};
+    return r;
+}
+
+// Rotation by angle radians about axis (right-handed, Rodrigues); axis need not be unit length.
+TRAZO_HD Affine3 makeRotation(Vec3 axis, float angle) {
+    const Vec3 a = normalize(axis);
+    const float c = cosf(angle), s = sinf(angle), t = 1.0f - c;
+    Affine3 r;
+    r.row[0] = {t * a.x * a.x + c, t * a.x * a.y - s * a.z, t * a.x * a.z + s * a.y};
+    r.row[1] = {t * a.x * a.y + s * a.z, t * a.y * a.y + c, t * a.y * a.z - s * a.x};
+    r.row[2] = {t * a.x * a.z - s * a.y, t * a.y * a.z + s * a.x, t * a.z * a.z + c};
+    return r;
+}
+
+}  // namespace trazo

@@ -1,0 +1,151 @@
+// Flattening of the host scene into the arrays kernels read, and the scene's feature mask.
+#include "device/flatten.h"
+
+#include <cmath>
+#include <numeric>
+
+namespace trazo {
+
+namespace {
+
+constexpr float kDegrees = 3.14159265358979f / 180.0f;
+
+MaterialData toMaterialData(const Material& m) {
+    MaterialData d{};
+    d.diffuse = m.diffuseColor;
+    d.specular = m.specularColor;
+    d.emissive = m.emissiveColor;
+    d.roughness = m.roughness;
+    d.opacity = m.opacity;
+    d.refractionIndex = m.refractionIndex;
+    d.reflectionHalfAngle = 0.5f * m.reflectionAngleDegrees * kDegrees;
+    d.reflectionAmount = m.reflectionAmount;
+    d.diffuseTexture = m.diffuseTexture;
+    d.specularTexture = m.specularTexture;
+    d.emissiveTexture = m.emissiveTexture;
+    d.normalTexture = m.normalTexture;
+    return d;
+}
+
+// Materials used by objects, with the default material appended when some object omits one.
+struct MaterialTable {
+    std::vector<MaterialData> data;
+    uint32_t defaultIndex = 0;
+    bool defaultUsed = false;
+
+    explicit MaterialTable(const Scene& scene) {
+        for (const Material& m : scene.materials) data.push_back(toMaterialData(m));
+        defaultIndex = (uint32_t)data.size();
+        data.push_back(toMaterialData(Material{}));
+    }
+    uint32_t index(int32_t material) {
+        if (material == kDefaultMaterial) {
+            defaultUsed = true;
+            return defaultIndex;
+        }
+        return (uint32_t)material;
+    }
+};
+
+FeatureMask materialFeatures(const MaterialData& m, const SceneSettings& s) {
+    FeatureMask f = 0;
+    const bool reflects = !isBlack(m.specular) && m.reflectionAmount > 0.0f && m.opacity > 0.0f &&
+                          s.reflectionQuality >= 1 && s.reflectionSteps >= 1;
+    if (reflects) f |= kFeatureReflection;
+    if (reflects && m.reflectionHalfAngle > 0.0f) f |= kFeatureGlossy;
+    if (m.opacity < 1.0f) f |= kFeatureRefraction;
+    if (!isBlack(m.emissive)) f |= kFeatureEmissive;
+    if (m.diffuseTexture >= 0 || m.specularTexture >= 0 || m.emissiveTexture >= 0 || m.normalTexture >= 0)
+        f |= kFeatureTextures;
+    return f;
+}
+
+}  // namespace
+
+void areaLightAxes(Vec3 normal, float rollAngle, Vec3& u, Vec3& v) {
+    const Vec3 n = normalize(normal);
+    // Within 0.1° of ±Y the reference axis becomes +Z (SPEC §3).
+    const bool nearVertical = fabsf(n.y) > cosf(0.1f * kDegrees);
+    const Vec3 a = nearVertical ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
+    const Vec3 u0 = normalize(cross(a, n));
+    const Vec3 v0 = cross(n, u0);
+    const float c = cosf(rollAngle), s = sinf(rollAngle);
+    u = u0 * c + v0 * s;
+    v = v0 * c - u0 * s;
+}
+
+FlattenResult flatten(const Scene& scene) {
+    FlattenResult result;
+    SceneArrays& out = result.arrays;
+    MaterialTable materials(scene);
+    const SceneSettings& s = scene.settings;
+
+    for (const Sphere& sphere : scene.spheres) {
+        out.objects.push_back({ObjectKind::Sphere, (uint32_t)out.spheres.size(), materials.index(sphere.material)});
+        out.spheres.push_back({sphere.center, sphere.radius});
+    }
+    for (const Box& box : scene.boxes) {
+        const Affine3 worldFromObject = composeTransforms(box.transforms);
+        out.objects.push_back({ObjectKind::Box, (uint32_t)out.boxes.size(), materials.index(box.material)});
+        out.boxes.push_back({inverse(worldFromObject), worldFromObject});
+    }
+    for (const Cylinder& c : scene.cylinders) {
+        out.objects.push_back({ObjectKind::Cylinder, (uint32_t)out.cylinders.size(), materials.index(c.material)});
+        out.cylinders.push_back({c.base, normalize(c.axis), c.height, c.radius});
+    }
+    if (!materials.defaultUsed) materials.data.pop_back();
+    out.materials = std::move(materials.data);
+
+    for (const PointLight& l : scene.pointLights) out.pointLights.push_back({l.position, l.color});
+    for (const AreaLight& l : scene.areaLights) {
+        Vec3 u, v;
+        areaLightAxes(l.direction, l.rollAngle, u, v);
+        const RectangleShape rect{l.position, u * (0.5f * l.width), v * (0.5f * l.height), normalize(l.direction)};
+        out.areaLights.push_back({rect, l.color, (uint32_t)l.subdivisionX, (uint32_t)l.subdivisionY});
+    }
+
+    out.settings = RenderSettings{s.backgroundColor, (uint32_t)s.reflectionQuality, (uint32_t)s.reflectionSteps,
+                                  (uint32_t)s.indirectQuality, s.colorBleeding, (uint32_t)s.antialiasing};
+
+    FeatureMask f = 0;
+    if (!out.pointLights.empty()) f |= kFeaturePointLights;
+    if (!out.areaLights.empty()) f |= kFeatureAreaLights;
+    for (const ObjectRef& o : out.objects) f |= materialFeatures(out.materials[o.material], s);
+    if (s.indirectQuality >= 1 && s.colorBleeding > 0.0f) f |= kFeatureIndirect;
+    if (!scene.meshes.empty()) f |= kFeatureMeshes;
+    if (!scene.csgs.empty()) f |= kFeatureCsg;
+    out.features = f;
+
+    // Parsed and kept in the host scene, rendered by later issues; everything else still renders.
+    if (!scene.meshes.empty())
+        result.unsupported.push_back(std::to_string(scene.meshes.size()) + " Mesh object(s) are not rendered yet");
+    if (!scene.csgs.empty())
+        result.unsupported.push_back(std::to_string(scene.csgs.size()) + " CSG object(s) are not rendered yet");
+    if (f & kFeatureTextures)
+        result.unsupported.push_back("material textures are ignored (only their colours are used) for now");
+    if (f & kFeatureIndirect)
+        result.unsupported.push_back("indirect light (IndirectQuality " + std::to_string(s.indirectQuality) +
+                                     ") is not computed yet: direct light only");
+    return result;
+}
+
+uint32_t fullCyclePasses(const SceneArrays& a) {
+    uint64_t cycle = a.settings.antialiasing;
+    auto include = [&](uint64_t n) { cycle = std::min<uint64_t>(std::lcm(cycle, n), kMaxCyclePasses); };
+    for (const AreaLightData& l : a.areaLights) include((uint64_t)l.cellsU * l.cellsV);
+    const uint64_t q = a.settings.reflectionQuality;
+    if ((a.features & kFeatureGlossy) && q > 0) include(2 * q * q);
+    return (uint32_t)std::max<uint64_t>(cycle, 1);
+}
+
+std::string describeFeatures(FeatureMask mask) {
+    static const char* const kNames[] = {"point-lights", "area-lights", "reflection", "glossy",  "refraction",
+                                         "emissive",     "indirect",    "textures",   "meshes",  "csg"};
+    std::string s;
+    for (int i = 0; i < 10; ++i) {
+        if (mask & (1u << i)) s += (s.empty() ? "" : " ") + std::string(kNames[i]);
+    }
+    return s.empty() ? "none" : s;
+}
+
+}  // namespace trazo

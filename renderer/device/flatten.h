@@ -1,0 +1,29 @@
+// flatten(): host Scene -> SceneArrays (world-space shapes, material indices, feature mask).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "device/scene_arrays.h"
+#include "scene/scene.h"
+
+namespace trazo {
+
+struct FlattenResult {
+    SceneArrays arrays;
+    // One line per scene feature this build cannot render yet (meshes, CSG, textures, indirect light);
+    // the rest of the scene renders.
+    std::vector<std::string> unsupported;
+};
+
+FlattenResult flatten(const Scene& scene);
+
+// u and v axes of an area light's rectangle (SPEC §3 AreaLight), unit length, before Width/Height.
+void areaLightAxes(Vec3 normal, float rollAngle, Vec3& u, Vec3& v);
+
+// Passes for one full cycle of every stratified grid the scene uses (antialiasing positions, area-light
+// cells, glossy strata): the least common multiple of their sizes, capped at kMaxCyclePasses.
+uint32_t fullCyclePasses(const SceneArrays& arrays);
+constexpr uint32_t kMaxCyclePasses = 1u << 16;
+
+}  // namespace trazo

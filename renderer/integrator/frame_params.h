@@ -1,0 +1,21 @@
+// FrameParams: the per-render values a pass needs besides the scene (camera, image size, seed).
+#pragma once
+
+#include <cstdint>
+
+#include "integrator/camera_frame.h"
+
+namespace trazo {
+
+struct FrameParams {
+    CameraFrame camera;
+    uint32_t seed = 0;
+};
+
+// Accumulation: float RGB sums and the number of samples added, per pixel.
+struct AccumPixel {
+    Vec3 sum;
+    float count;
+};
+
+}  // namespace trazo

@@ -1,0 +1,125 @@
+// renderSample(): one sample of one pixel, (scene, frame, pixel, pass) -> RGB. The whole integrator of
+// SPEC §5, written once for the CPU backend and the CUDA kernel. The recursion of Color(depth) becomes
+// an explicit, bounded stack of pending rays, each carrying the weight its colour enters the pixel with.
+#pragma once
+
+#include "integrator/direct_light.h"
+#include "integrator/frame_params.h"
+#include "integrator/scattering.h"
+
+namespace trazo {
+
+constexpr int kMaxPendingRays = 32;                 // a branch that would overflow contributes 0
+constexpr uint32_t kMaxTransmissionSegments = 16;   // SPEC §5: longer chains contribute 0
+constexpr uint32_t kGridAntialiasing = 0x41414141u;
+
+struct PendingRay {
+    Ray ray;
+    Vec3 weight;
+    uint32_t reflectionDepth;
+    uint32_t segments;  // transmission segments in the current chain
+    uint32_t node;      // identifies this ray in the pixel's sample tree (decorrelates its strata)
+};
+
+// The antialiasing position of a pass: one of the k×k sub-pixel centres (SPEC §5 Pixel).
+TRAZO_HD void antialiasingPosition(uint32_t antialiasing, const StrataKey& strata, uint32_t px, uint32_t py,
+                                   float& x, float& y) {
+    const uint32_t k = antialiasing >= 16 ? 4u : (antialiasing >= 4 ? 2u : 1u);
+    const uint32_t s = strata.stratum(kGridAntialiasing, k * k);
+    x = float(px) + (float(s % k) + 0.5f) / float(k);
+    y = float(py) + (float(s / k) + 0.5f) / float(k);
+}
+
+TRAZO_HD bool materialReflects(const MaterialData& m, const RenderSettings& s, uint32_t depth) {
+    return !isBlack(m.specular) && m.reflectionAmount > 0.0f && m.opacity > 0.0f && s.reflectionQuality >= 1 &&
+           depth < s.reflectionSteps;
+}
+
+// The reflected direction of this pass: the mirror direction, or one jittered stratum of the glossy cone
+// (θ uniform in [0, half-angle), φ uniform; q θ-bins × 2q φ-bins).
+TRAZO_HD Vec3 sampleReflection(const ShadingPoint& sp, Vec3 d, const MaterialData& m, uint32_t quality,
+                               const StrataKey& strata, SampleStream& rng) {
+    const Vec3 mirror = reflectDirection(d, sp.n);
+    if (m.reflectionHalfAngle <= 0.0f) return mirror;
+    const uint32_t s = strata.stratum(kGridGlossy, 2 * quality * quality);
+    const float theta = (float(s % quality) + rng.next()) / float(quality) * m.reflectionHalfAngle;
+    const float phi = (float(s / quality) + rng.next()) / float(2 * quality) * 6.28318530718f;
+    return directionInCone(mirror, theta, phi);
+}
+
+TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
+                           uint32_t pass, uint32_t& rays) {
+    const uint32_t pixelIndex = py * frame.camera.width + px;
+    SampleStream rng(frame.seed, pixelIndex, pass);
+    const RenderSettings& settings = scene.settings;
+
+    PendingRay stack[kMaxPendingRays];
+    int pending = 0;
+    {
+        float x, y;
+        antialiasingPosition(settings.antialiasing, StrataKey{frame.seed, pixelIndex, pass, 1u}, px, py, x, y);
+        stack[pending++] = PendingRay{generateCameraRay(frame.camera, x, y), Vec3(1.0f), 0u, 0u, 1u};
+    }
+    auto push = [&](const PendingRay& r) {
+        if (pending < kMaxPendingRays) stack[pending++] = r;
+    };
+
+    Vec3 color(0.0f);
+    while (pending > 0) {
+        const PendingRay r = stack[--pending];
+        ++rays;
+        SurfaceHit hit;
+        if (!intersectScene(scene, r.ray, INFINITY, hit)) {
+            color += r.weight * settings.background;
+            continue;
+        }
+        if (hit.object == kNoObject) {  // area-light rectangles are visible and return their colour
+            color += r.weight * scene.areaLights[hit.areaLight].color;
+            continue;
+        }
+        const MaterialData& m = scene.materials[scene.objects[hit.object].material];
+        const Vec3 d = r.ray.direction;
+        const Vec3 p = pointAt(r.ray, hit.t);
+        const Vec3 pError = hitPointError(r.ray, hit.t);
+        const bool frontFacing = dot(d, hit.normal) < 0.0f;
+
+        if (!frontFacing && m.opacity < 1.0f) {
+            // Leaving a transparent solid: refract out (η = n/1) or reflect internally; nothing is shaded.
+            if (r.segments >= kMaxTransmissionSegments) continue;
+            const Vec3 nInside = -hit.normal;
+            Vec3 out;
+            if (!refractDirection(d, nInside, m.refractionIndex, out)) out = reflectDirection(d, nInside);
+            push(PendingRay{Ray{offsetRayOrigin(p, pError, hit.normal, out), out}, r.weight, r.reflectionDepth,
+                            r.segments + 1, hashCombine(r.node, 3)});
+            continue;
+        }
+
+        // Normals turned to face the incoming ray (opaque insides, open surfaces).
+        const Vec3 ng = frontFacing ? hit.normal : -hit.normal;
+        const ShadingPoint sp{p, pError, ng, ng, -d};
+        const StrataKey strata{frame.seed, pixelIndex, pass, r.node};
+
+        const float a = materialReflects(m, settings, r.reflectionDepth) ? m.reflectionAmount : 0.0f;
+        const float directWeight = (1.0f - a) * m.opacity;  // 0 for pure mirrors and clear glass: no shadow rays
+        const Vec3 direct = directWeight > 0.0f ? directLight(scene, sp, m, strata, rng, rays) : Vec3(0.0f);
+        color += r.weight * (direct * directWeight + m.emissive);
+
+        if (a > 0.0f) {
+            const Vec3 dir = sampleReflection(sp, d, m, settings.reflectionQuality, strata, rng);
+            if (dot(dir, sp.ng) > 0.0f) {  // directions below the geometric surface contribute 0
+                push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, r.weight * m.specular * (a * m.opacity),
+                                r.reflectionDepth + 1, 0u, hashCombine(r.node, 1)});
+            }
+        }
+        if (m.opacity < 1.0f && r.segments < kMaxTransmissionSegments) {
+            // Entering: η = 1/n; total internal reflection is possible only when n < 1.
+            Vec3 dir;
+            if (!refractDirection(d, sp.n, 1.0f / m.refractionIndex, dir)) dir = reflectDirection(d, sp.n);
+            push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, r.weight * (1.0f - m.opacity),
+                            r.reflectionDepth, r.segments + 1, hashCombine(r.node, 2)});
+        }
+    }
+    return color;
+}
+
+}  // namespace trazo

@@ -1,0 +1,18 @@
+// Formatting of diagnostics as FILE:LINE[:COLUMN]: severity: reason (hint).
+#include "scene/diagnostic.h"
+
+namespace trazo {
+
+std::string formatDiagnostic(const Diagnostic& d) {
+    std::string s = d.where.file;
+    if (d.where.line > 0) {
+        s += ":" + std::to_string(d.where.line);
+        if (d.where.column > 0) s += ":" + std::to_string(d.where.column);
+    }
+    s += d.severity == Severity::Error ? ": error: " : ": warning: ";
+    s += d.message;
+    if (!d.hint.empty()) s += " (" + d.hint + ")";
+    return s;
+}
+
+}  // namespace trazo

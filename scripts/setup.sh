@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs every Debian package Trazo needs, then configures and builds it (Release, into build/).
+# Usage: scripts/setup.sh [extra cmake arguments]   (TRAZO_SKIP_APT=1 skips the package step)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(build-essential cmake ninja-build pkg-config
+  libglfw3-dev libimgui-dev libfreeimage-dev python3-glad libtinyobjloader-dev
+  libgtest-dev libbenchmark-dev libcli11-dev
+  xvfb xauth xdotool libgl1-mesa-dri mesa-utils)
+
+if [ "${TRAZO_SKIP_APT:-0}" != 1 ]; then
+  missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -gt 0 ]; then
+    sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
+    echo "setup: installing ${missing[*]}" >&2
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+  fi
+fi
+
+# nvcc is not on PATH in every shell; the toolkit's usual home is enough for CMake to find it.
+cuda_args=()
+if [ -x /usr/local/cuda/bin/nvcc ] && [ "${TRAZO_ENABLE_CUDA:-ON}" != OFF ]; then
+  cuda_args+=(-DCMAKE_CUDA_COMPILER=/usr/local/cuda/bin/nvcc)
+fi
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${cuda_args[@]}" "$@"
+cmake --build build

@@ -1,0 +1,56 @@
+// Test harness implementation: the same pipeline as `trazo --render`, minus the file.
+#include "render_harness.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "device/flatten.h"
+#include "render/progressive_render.h"
+#include "render/resolve.h"
+#include "scene/scene_reader.h"
+#include "test_paths.h"
+
+namespace trazo::test {
+
+RenderedImage renderSceneText(const std::string& sceneText, const RenderRequest& request) {
+    Diagnostics diags;
+    const Scene scene = readSceneText(sceneText, tempPath("harness.scene"), diags);
+    if (diags.hasErrors()) {
+        for (const auto& d : diags.items) ADD_FAILURE() << formatDiagnostic(d);
+        return {};
+    }
+    const FlattenResult flat = flatten(scene);
+    std::string error;
+    auto backend = createBackend(request.backend, request.threads, error);
+    if (!backend) {
+        ADD_FAILURE() << error;
+        return {};
+    }
+    RenderedImage image;
+    image.width = scene.settings.renderWidth;
+    image.height = scene.settings.renderHeight;
+    backend->upload(flat.arrays);
+    backend->resize(image.width, image.height);
+    const FrameParams frame{makeCameraFrame(scene.camera.pov, scene.camera.poi, scene.camera.fovDegrees,
+                                            image.width, image.height),
+                            request.seed};
+    RenderLimits limits;
+    limits.passes = request.passes;
+    image.rays = renderProgressive(*backend, frame, limits).rays;
+    std::vector<AccumPixel> accum;
+    backend->readAccumulation(accum);
+    image.pixels = resolveImage(accum);
+    return image;
+}
+
+double rmse(const RenderedImage& a, const RenderedImage& b) {
+    double sum = 0.0;
+    for (size_t i = 0; i < a.pixels.size(); ++i) {
+        const Vec3 d = a.pixels[i] - b.pixels[i];
+        sum += double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z;
+    }
+    return std::sqrt(sum / (3.0 * a.pixels.size()));
+}
+
+}  // namespace trazo::test

@@ -1,0 +1,32 @@
+// Test harness: scene text -> image through the real reader, flatten, CPU backend and resolve.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "backends/backend.h"
+#include "core/vec3.h"
+
+namespace trazo::test {
+
+struct RenderedImage {
+    int width = 0, height = 0;
+    std::vector<Vec3> pixels;  // row 0 = top
+    uint64_t rays = 0;
+    const Vec3& at(int x, int y) const { return pixels[(size_t)y * width + x]; }
+};
+
+struct RenderRequest {
+    uint32_t passes = 1;
+    unsigned threads = 2;
+    uint32_t seed = 0;
+    BackendChoice backend = BackendChoice::Cpu;
+};
+
+// Fails the current test (ADD_FAILURE) and returns an empty image when the scene does not read.
+RenderedImage renderSceneText(const std::string& sceneText, const RenderRequest& request);
+
+// Root-mean-square difference over all channels.
+double rmse(const RenderedImage& a, const RenderedImage& b);
+
+}  // namespace trazo::test

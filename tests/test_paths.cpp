@@ -1,0 +1,22 @@
+// Paths for the tests: the source tree, the CLI binary and a per-process scratch folder.
+#include "test_paths.h"
+
+#include <filesystem>
+#include <unistd.h>
+
+namespace trazo::test {
+
+std::string sourcePath(const std::string& relative) { return std::string(TRAZO_SOURCE_DIR) + "/" + relative; }
+
+std::string trazoBinary() { return TRAZO_BINARY; }
+
+std::string tempPath(const std::string& name) {
+    static const std::filesystem::path dir = [] {
+        auto d = std::filesystem::temp_directory_path() / ("trazo_tests_" + std::to_string(getpid()));
+        std::filesystem::create_directories(d);
+        return d;
+    }();
+    return (dir / name).string();
+}
+
+}  // namespace trazo::test
