@@ -14,6 +14,8 @@ if [ "${TRAZO_SKIP_APT:-0}" != 1 ]; then
   for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
+  # The bunny comes from the npm registry: node and npm are needed (Debian's, unless the machine has its own).
+  command -v npm >/dev/null 2>&1 || missing+=(nodejs npm)
   if [ ${#missing[@]} -gt 0 ]; then
     sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
     echo "setup: installing ${missing[*]}" >&2
@@ -21,6 +23,9 @@ if [ "${TRAZO_SKIP_APT:-0}" != 1 ]; then
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
   fi
 fi
+
+# The Stanford bunny of scenes 2, 5 and 10 (npm package `bunny`, not committed).
+scenes/assets/make_bunny.sh
 
 # nvcc is not on PATH in every shell; the toolkit's usual home is enough for CMake to find it.
 cuda_args=()

@@ -1,0 +1,51 @@
+// CLI11 parsing of the trazo command line (the only file that includes CLI11: it is slow to compile).
+#include "command_line.h"
+
+#include <CLI/CLI.hpp>
+
+namespace trazo {
+
+std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
+    CLI::App app{"Trazo: a ray tracer for the scene language of SPEC.md, on CPU and CUDA", "trazo"};
+    app.set_version_flag("--version", "trazo " TRAZO_VERSION);
+    app.add_option("SCENE", out.viewerScene, "Scene to open in the interactive viewer");
+    app.add_option("--render", out.renderScene, "Render SCENE headless to a file")->type_name("SCENE");
+    app.add_option("-o,--output", out.output, "Output image; format by extension (png bmp jpg tga exr hdr pfm)")
+        ->capture_default_str();
+    app.add_option("--spp", out.spp, "Passes per pixel (default: one full cycle of the scene's strata)")
+        ->check(CLI::Range(1u, 1u << 24));
+    app.add_option("--time", out.seconds, "Stop after this wall time in seconds (with --spp: whichever first)")
+        ->check(CLI::PositiveNumber);
+    const std::map<std::string, BackendChoice> backends{
+        {"auto", BackendChoice::Auto}, {"cpu", BackendChoice::Cpu}, {"cuda", BackendChoice::Cuda}};
+    app.add_option("--backend", out.backend, "auto (CUDA when a device is present), cpu or cuda")
+        ->transform(CLI::CheckedTransformer(backends, CLI::ignore_case));
+    app.add_option("--threads", out.threads, "CPU threads (default: all cores)")->check(CLI::Range(1u, 4096u));
+    app.add_option("--seed", out.seed, "Random seed; the same seed gives the same image");
+    app.add_option("--width", out.width, "Override RenderWidth")->check(CLI::Range(1u, 16384u));
+    app.add_option("--height", out.height, "Override RenderHeight")->check(CLI::Range(1u, 16384u));
+    app.add_option("--stats", out.statsPath, "Write timings and counts as JSON to this file");
+    app.add_flag("--quiet", out.quiet, "No progress bar");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return 2;
+    }
+    if (out.renderScene.empty() && out.viewerScene.empty()) {
+        std::fputs("trazo: no scene given; try `trazo --render SCENE -o image.png` or `trazo --help`\n", stderr);
+        return 2;
+    }
+    if (!out.renderScene.empty() && !out.viewerScene.empty()) {
+        std::fputs("trazo: give the scene either to --render or as the viewer's SCENE, not both\n", stderr);
+        return 2;
+    }
+    return std::nullopt;
+}
+
+}  // namespace trazo

@@ -1,0 +1,30 @@
+// The command line of DESIGN.md "Command line", parsed into plain options (CLI11 stays in one file).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "backends/backend.h"
+
+namespace trazo {
+
+struct CommandLine {
+    std::string renderScene;  // --render SCENE (headless)
+    std::string viewerScene;  // positional SCENE (viewer)
+    std::string output = "out.bmp";
+    std::optional<uint32_t> spp;
+    double seconds = 0.0;
+    BackendChoice backend = BackendChoice::Auto;
+    unsigned threads = 0;
+    uint32_t seed = 0;
+    std::optional<uint32_t> width, height;
+    std::string statsPath;
+    bool quiet = false;
+};
+
+// Parses argv. Returns the exit status to stop with (0 after --help/--version, 2 on bad usage, with the
+// message already printed), or nothing when the program should go on.
+std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out);
+
+}  // namespace trazo

@@ -1,0 +1,116 @@
+// The headless render: the seed's three timed phases (scene creation, upload, render), then the file.
+#include "headless_render.h"
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+
+#include "device/flatten.h"
+#include "image/image_writer.h"
+#include "progress_bar.h"
+#include "render/progressive_render.h"
+#include "render/resolve.h"
+#include "render_stats.h"
+#include "scene/scene_reader.h"
+
+namespace trazo {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void printDiagnostics(const Diagnostics& diags) {
+    for (const Diagnostic& d : diags.items) std::fprintf(stderr, "%s\n", formatDiagnostic(d).c_str());
+}
+
+}  // namespace
+
+int runHeadlessRender(const CommandLine& options) {
+    ImageFormat format;
+    if (!imageFormatFromPath(options.output, format)) {
+        std::fprintf(stderr, "trazo: %s: unknown image format (use .png .bmp .jpg .tga .exr .hdr or .pfm)\n",
+                     options.output.c_str());
+        return 2;
+    }
+
+    RenderStats stats;
+    stats.scene = options.renderScene;
+    stats.seed = options.seed;
+
+    auto t0 = std::chrono::steady_clock::now();
+    Diagnostics diags;
+    const Scene scene = readSceneFile(options.renderScene, diags);
+    printDiagnostics(diags);
+    if (diags.hasErrors()) return 2;
+    const FlattenResult flat = flatten(scene);
+    if (!flat.unsupported.empty()) {
+        std::string list;
+        for (const std::string& s : flat.unsupported) list += (list.empty() ? "" : "; ") + s;
+        std::fprintf(stderr, "%s: warning: rendering without what this version cannot draw yet: %s\n",
+                     options.renderScene.c_str(), list.c_str());
+    }
+    stats.width = options.width.value_or((uint32_t)scene.settings.renderWidth);
+    stats.height = options.height.value_or((uint32_t)scene.settings.renderHeight);
+    stats.fullCycle = fullCyclePasses(flat.arrays);
+    stats.features = describeFeatures(flat.arrays.features);
+    stats.parseSeconds = secondsSince(t0);
+
+    try {
+        std::string why;
+        std::unique_ptr<Backend> backend = createBackend(options.backend, options.threads, why);
+        if (!backend) {
+            std::fprintf(stderr, "trazo: cannot use the CUDA backend: %s\n", why.c_str());
+            return 1;
+        }
+        stats.backend = backend->name();
+        stats.device = backend->deviceName();
+        if (!options.quiet || options.backend == BackendChoice::Auto) {
+            std::fprintf(stderr, "trazo: rendering on %s (%s)%s%s\n", stats.backend.c_str(), stats.device.c_str(),
+                         why.empty() ? "" : "; CUDA not used: ", why.c_str());
+        }
+
+        t0 = std::chrono::steady_clock::now();
+        backend->upload(flat.arrays);
+        backend->resize(stats.width, stats.height);
+        stats.uploadSeconds = secondsSince(t0);
+
+        const FrameParams frame{makeCameraFrame(scene.camera.pov, scene.camera.poi, scene.camera.fovDegrees,
+                                                stats.width, stats.height),
+                                options.seed};
+        RenderLimits limits;
+        limits.seconds = options.seconds;
+        limits.passes = options.spp ? *options.spp : (options.seconds > 0 ? (1u << 24) : stats.fullCycle);
+        ProgressBar bar(!options.quiet, options.seconds);
+        const RenderOutcome outcome =
+            renderProgressive(*backend, frame, limits, [&](const RenderProgress& p) { bar.update(p); });
+        bar.finish();
+        stats.spp = outcome.passes;
+        stats.renderSeconds = outcome.seconds;
+        stats.rays = outcome.rays;
+
+        std::vector<AccumPixel> accum;
+        backend->readAccumulation(accum);
+        std::string error;
+        if (!writeImage(options.output, (int)stats.width, (int)stats.height, resolveImage(accum), error)) {
+            std::fprintf(stderr, "trazo: %s\n", error.c_str());
+            return 1;
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "trazo: %s\n", e.what());
+        return 1;
+    }
+
+    if (!options.quiet) std::fputs(formatStatsSummary(stats).c_str(), stderr);
+    if (!options.statsPath.empty()) {
+        std::string error;
+        if (!writeTextFileAtomically(options.statsPath, formatStatsJson(stats), error)) {
+            std::fprintf(stderr, "trazo: %s\n", error.c_str());
+            return 1;
+        }
+    }
+    return 0;
+}
+
+}  // namespace trazo

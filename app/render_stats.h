@@ -1,0 +1,28 @@
+// RenderStats: the seed's timing split plus counts, printed at the end and written by --stats as JSON.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace trazo {
+
+struct RenderStats {
+    std::string scene;
+    std::string backend, device;
+    uint32_t width = 0, height = 0;
+    uint32_t spp = 0;            // passes per pixel actually rendered
+    uint32_t fullCycle = 0;      // passes of one full cycle of the scene's strata
+    uint32_t seed = 0;
+    std::string features;
+    double parseSeconds = 0, uploadSeconds = 0, renderSeconds = 0;
+    uint64_t rays = 0;
+
+    double mraysPerSecond() const { return renderSeconds > 0 ? rays / renderSeconds * 1e-6 : 0.0; }
+};
+
+std::string formatStatsSummary(const RenderStats& s);  // human-readable, a few lines
+std::string formatStatsJson(const RenderStats& s);
+// Writes text to a temporary file beside `path`, then renames it into place.
+bool writeTextFileAtomically(const std::string& path, const std::string& text, std::string& error);
+
+}  // namespace trazo

@@ -1,0 +1,29 @@
+// Image output (host): writes a linear RGB image to .png/.bmp/.jpg/.tga (8-bit) or .exr/.hdr/.pfm (float).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/vec3.h"
+
+namespace trazo {
+
+enum class ImageFormat { Png, Bmp, Jpeg, Tga, Exr, Hdr, Pfm };
+
+// Format from the file extension (case-insensitive: .png .bmp .jpg .jpeg .tga .exr .hdr .pfm); false if unknown.
+bool imageFormatFromPath(const std::string& path, ImageFormat& format);
+
+// Writes a linear RGB image, rows top to bottom (pixel (0,0) = top-left), through FreeImage.
+// 8-bit formats store round(255·clamp(c,0,1)) per channel with no gamma (SPEC §5); NaN is written as 0,
+// +inf as 255 and -inf as 0. JPEG is lossy even at the best quality used here (4:4:4, "superb"), so only
+// PNG, BMP and TGA hold those bytes exactly. .exr (32-bit float), .hdr (RGBE) and .pfm store c linear
+// and unchanged (EXR and PFM exactly; RGBE to within ~1% of a pixel's largest channel, no negatives).
+// PFM rows run bottom to top as the format requires (FreeImage's own PFM reader shows them upside down).
+// Writes to a temporary file in the same folder and renames it over `path` only on success, so a failure
+// never leaves a half-written file or a temporary behind and an existing `path` stays as it was.
+// Returns false with a plain reason in `error` on failure (unknown extension, bad size, missing or
+// unwritable folder, FreeImage or disk failure).
+bool writeImage(const std::string& path, int width, int height, const std::vector<Vec3>& rgbTopDown,
+                std::string& error);
+
+}  // namespace trazo
