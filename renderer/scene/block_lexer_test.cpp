@@ -1,0 +1,186 @@
+// Tests of the block lexer: layout, comments, value kinds, and syntax errors with their lines.
+#include "scene/block_lexer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace trazo {
+namespace {
+
+std::vector<std::string> formatted(const Diagnostics& d) {
+    std::vector<std::string> out;
+    for (const Diagnostic& x : d.items) out.push_back(formatDiagnostic(x));
+    return out;
+}
+
+TEST(BlockLexerTest, BraceOnIdentifierLineOrNextLine) {
+    Diagnostics diags;
+    const auto blocks = lexBlocks("Sphere {\n  Radius 2\n}\n\nBox\n{\n  Scale 1 2 3\n}\n", "a.scene", diags);
+    EXPECT_TRUE(diags.items.empty()) << formatted(diags)[0];
+    ASSERT_EQ(blocks.size(), 2u);
+    EXPECT_EQ(blocks[0].identifier, "Sphere");
+    EXPECT_EQ(blocks[0].where.line, 1);
+    EXPECT_EQ(blocks[0].where.file, "a.scene");
+    ASSERT_EQ(blocks[0].parameters.size(), 1u);
+    EXPECT_EQ(blocks[0].parameters[0].name, "Radius");
+    EXPECT_EQ(blocks[0].parameters[0].line, 2);
+    EXPECT_EQ(blocks[0].parameters[0].column, 3);
+    EXPECT_EQ(blocks[1].identifier, "Box");
+    EXPECT_EQ(blocks[1].where.line, 5);
+    ASSERT_EQ(blocks[1].parameters.size(), 1u);
+    EXPECT_EQ(blocks[1].parameters[0].values.size(), 3u);
+    EXPECT_EQ(blocks[1].parameters[0].line, 7);
+}
+
+TEST(BlockLexerTest, CommentsAnywhereAndBlankLines) {
+    Diagnostics diags;
+    const std::string text =
+        "# header comment\n"
+        "#no space after the hash\n"
+        "Sphere # after the identifier\n"
+        "\n"
+        "# between identifier and brace\n"
+        "{ # after the brace\n"
+        "    # inside\n"
+        "    Center 1 2 3 # after values\n"
+        "\t\n"
+        "    #Radius 9\n"
+        "} # after the closing brace\n"
+        "# trailing\n";
+    const auto blocks = lexBlocks(text, "c.scene", diags);
+    EXPECT_TRUE(diags.items.empty()) << formatted(diags)[0];
+    ASSERT_EQ(blocks.size(), 1u);
+    EXPECT_EQ(blocks[0].where.line, 3);
+    ASSERT_EQ(blocks[0].parameters.size(), 1u);
+    EXPECT_EQ(blocks[0].parameters[0].name, "Center");
+    EXPECT_EQ(blocks[0].parameters[0].values.size(), 3u);
+    EXPECT_EQ(blocks[0].parameters[0].line, 8);
+}
+
+TEST(BlockLexerTest, ValueKindsAndColumns) {
+    Diagnostics diags;
+    const auto blocks =
+        lexBlocks("Mesh\n{\n Source \"my dir/a#b.obj\"\n Material mat1\n Scale -0.5 2e-3 +1\n}\n", "m.scene", diags);
+    EXPECT_TRUE(diags.items.empty());
+    ASSERT_EQ(blocks.size(), 1u);
+    const auto& p = blocks[0].parameters;
+    ASSERT_EQ(p.size(), 3u);
+    ASSERT_EQ(p[0].values.size(), 1u);
+    EXPECT_EQ(p[0].values[0].kind, BlockValue::Kind::Path);
+    EXPECT_EQ(p[0].values[0].text, "my dir/a#b.obj");  // '#' inside quotes is not a comment
+    EXPECT_EQ(p[0].values[0].column, 9);
+    EXPECT_EQ(p[1].values[0].kind, BlockValue::Kind::Name);
+    EXPECT_EQ(p[1].values[0].text, "mat1");
+    ASSERT_EQ(p[2].values.size(), 3u);
+    EXPECT_EQ(p[2].values[0].kind, BlockValue::Kind::Number);
+    EXPECT_DOUBLE_EQ(p[2].values[0].number, -0.5);
+    EXPECT_DOUBLE_EQ(p[2].values[1].number, 2e-3);
+    EXPECT_DOUBLE_EQ(p[2].values[2].number, 1.0);
+    EXPECT_EQ(p[2].values[1].column, 13);
+}
+
+TEST(BlockLexerTest, NonFiniteTokensAreNumbers) {
+    Diagnostics diags;
+    const auto blocks = lexBlocks("Sphere\n{\n Center nan inf 1e999\n}\n", "n.scene", diags);
+    ASSERT_EQ(blocks.size(), 1u);
+    const auto& v = blocks[0].parameters[0].values;
+    ASSERT_EQ(v.size(), 3u);
+    for (const BlockValue& x : v) EXPECT_EQ(x.kind, BlockValue::Kind::Number) << x.text;
+    EXPECT_TRUE(std::isnan(v[0].number));
+    EXPECT_TRUE(std::isinf(v[1].number));
+    EXPECT_TRUE(std::isinf(v[2].number));
+}
+
+TEST(BlockLexerTest, WindowsLineEndingsAndByteOrderMark) {
+    Diagnostics diags;
+    const auto blocks = lexBlocks("\xEF\xBB\xBFSphere\r\n{\r\n Radius 2\r\n}\r\n", "w.scene", diags);
+    EXPECT_TRUE(diags.items.empty());
+    ASSERT_EQ(blocks.size(), 1u);
+    EXPECT_EQ(blocks[0].identifier, "Sphere");
+    ASSERT_EQ(blocks[0].parameters.size(), 1u);
+    EXPECT_EQ(blocks[0].parameters[0].values.size(), 1u);
+}
+
+TEST(BlockLexerTest, UnterminatedBlockAtEndOfFile) {
+    Diagnostics diags;
+    const auto blocks = lexBlocks("Camera\n{\n FOV 30\n\nSphere\n{\n Radius 1\n", "u.scene", diags);
+    ASSERT_EQ(diags.items.size(), 2u);
+    // The Camera block is closed by nobody: reported at its own line, and recovered as two blocks.
+    EXPECT_EQ(formatDiagnostic(diags.items[0]), "u.scene:1: error: unterminated block 'Camera' (no '}' before line 6)");
+    EXPECT_EQ(formatDiagnostic(diags.items[1]),
+              "u.scene:5: error: unterminated block 'Sphere' (no '}' before the end of the file)");
+    ASSERT_EQ(blocks.size(), 2u);
+    EXPECT_FALSE(blocks[0].terminated);
+    ASSERT_EQ(blocks[0].parameters.size(), 1u);  // "Sphere" was not kept as a parameter of Camera
+    EXPECT_EQ(blocks[1].identifier, "Sphere");
+    EXPECT_EQ(blocks[1].where.line, 5);
+}
+
+TEST(BlockLexerTest, UnterminatedBeforeSameLineBrace) {
+    Diagnostics diags;
+    const auto blocks = lexBlocks("Camera {\n FOV 30\nSphere {\n Radius 1\n}\n", "v.scene", diags);
+    ASSERT_EQ(diags.items.size(), 1u);
+    EXPECT_EQ(formatDiagnostic(diags.items[0]), "v.scene:1: error: unterminated block 'Camera' (no '}' before line 3)");
+    ASSERT_EQ(blocks.size(), 2u);
+    EXPECT_EQ(blocks[1].identifier, "Sphere");
+    EXPECT_TRUE(blocks[1].terminated);
+}
+
+TEST(BlockLexerTest, StrayBraceAndTextOutsideBlocks) {
+    Diagnostics diags;
+    const auto blocks = lexBlocks("Sphere\n{\n}\n}\nRadius 1\n\"x.obj\"\n", "s.scene", diags);
+    ASSERT_EQ(diags.items.size(), 3u);
+    EXPECT_EQ(formatDiagnostic(diags.items[0]), "s.scene:4:1: error: stray '}' outside a block");
+    EXPECT_EQ(formatDiagnostic(diags.items[1]), "s.scene:5:1: error: text outside a block: 'Radius 1'");
+    EXPECT_EQ(formatDiagnostic(diags.items[2]), "s.scene:6:1: error: text outside a block: '\"x.obj\"'");
+    EXPECT_EQ(blocks.size(), 1u);
+}
+
+TEST(BlockLexerTest, IdentifierWithoutBrace) {
+    Diagnostics diags;
+    lexBlocks("Sphere\nRadius 1\n", "i.scene", diags);
+    ASSERT_GE(diags.items.size(), 1u);
+    EXPECT_EQ(formatDiagnostic(diags.items[0]), "i.scene:1: error: expected '{' after 'Sphere'");
+    Diagnostics atEnd;
+    lexBlocks("Sphere {\n}\nBox\n", "j.scene", atEnd);
+    ASSERT_EQ(atEnd.items.size(), 1u);
+    EXPECT_EQ(formatDiagnostic(atEnd.items[0]), "j.scene:3: error: expected '{' after 'Box'");
+}
+
+TEST(BlockLexerTest, BraceWithoutNameAndUnterminatedQuote) {
+    Diagnostics diags;
+    const auto blocks = lexBlocks("{\n Radius 1\n}\nMesh {\n Source \"a.obj\n}\n", "b.scene", diags);
+    ASSERT_EQ(diags.items.size(), 2u);
+    EXPECT_EQ(formatDiagnostic(diags.items[0]), "b.scene:1:1: error: '{' without a block name");
+    EXPECT_EQ(formatDiagnostic(diags.items[1]), "b.scene:5:9: error: unterminated quoted path");
+    ASSERT_EQ(blocks.size(), 2u);
+    EXPECT_TRUE(blocks[0].identifier.empty());
+}
+
+TEST(BlockLexerTest, ClosingBraceAfterValues) {
+    Diagnostics diags;
+    const auto blocks = lexBlocks("Sphere {\n Radius 1 }\nBox {\n}\n", "k.scene", diags);
+    ASSERT_EQ(diags.items.size(), 1u);
+    EXPECT_EQ(formatDiagnostic(diags.items[0]), "k.scene:2:11: error: '}' must be on its own line");
+    ASSERT_EQ(blocks.size(), 2u);
+    EXPECT_EQ(blocks[0].parameters.size(), 1u);
+}
+
+TEST(BlockLexerTest, ReadTextFileReportsTheOsReason) {
+    std::string text, reason;
+    EXPECT_FALSE(readTextFile("/nonexistent/trazo/file.scene", text, reason));
+    EXPECT_EQ(reason, "No such file or directory");
+    EXPECT_FALSE(readTextFile("/tmp", text, reason));
+    EXPECT_EQ(reason, "Is a directory");
+}
+
+TEST(BlockLexerTest, RelativePathsResolveAgainstTheNamingFile) {
+    EXPECT_EQ(resolveRelativePath("scenes/a.scene", "assets/b.obj"), "scenes/assets/b.obj");
+    EXPECT_EQ(resolveRelativePath("scenes/sub/a.scene", "../c.csg"), "scenes/c.csg");
+    EXPECT_EQ(resolveRelativePath("a.scene", "b.obj"), "b.obj");
+    EXPECT_EQ(resolveRelativePath("scenes/a.scene", "/abs/b.obj"), "/abs/b.obj");
+}
+
+}  // namespace
+}  // namespace trazo

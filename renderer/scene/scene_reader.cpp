@@ -1,0 +1,240 @@
+// Scene reader (host): blocks → Scene through the block tables; names resolved in file order; the files a
+// scene names (.obj, .csg, images) read relative to the scene's folder.
+#include "scene/scene_reader.h"
+
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "scene/block_lexer.h"
+#include "scene/block_table.h"
+#include "scene/csg_reader.h"
+#include "scene/obj_reader.h"
+#include "scene/texture_reader.h"
+
+namespace trazo {
+namespace {
+
+// Where a texture or material name is first declared: used to tell "declared later" from "never declared".
+struct Declaration {
+    int line = 0;
+    size_t block = 0;
+};
+using Declarations = std::map<std::string, Declaration>;
+
+class SceneReader {
+public:
+    SceneReader(const std::string& file, Diagnostics& diags) : file_(file), diags_(diags) { scene_.path = file; }
+
+    Scene read(const std::string& text) {
+        const std::vector<Block> blocks = lexBlocks(text, file_, diags_);
+        collectDeclarations(blocks);
+        for (size_t i = 0; i < blocks.size(); ++i) readBlock(blocks[i], i);
+        return std::move(scene_);
+    }
+
+private:
+    void collectDeclarations(const std::vector<Block>& blocks) {
+        for (size_t i = 0; i < blocks.size(); ++i) {
+            Declarations* declared = blocks[i].identifier == "Texture"    ? &declaredTextures_
+                                     : blocks[i].identifier == "Material" ? &declaredMaterials_
+                                                                          : nullptr;
+            if (!declared) continue;
+            const ParameterLine* name = nullptr;  // the last Name line wins, as it will when the block is read
+            for (const ParameterLine& line : blocks[i].parameters) {
+                if (line.name == "Name" && line.values.size() == 1) name = &line;
+            }
+            if (name) declared->emplace(name->values[0].text, Declaration{name->line, i});
+        }
+    }
+
+    void readBlock(const Block& block, size_t index) {
+        const std::string& id = block.identifier;
+        if (id.empty()) return;  // a nameless '{', already reported
+        if (id == "SceneSettings") {
+            SceneSettings settings;  // like Camera, the last block wins as a whole
+            readParameters(block, sceneSettingsTable(), settings, diags_);
+            scene_.settings = settings;
+        } else if (id == "Camera") {
+            readCamera(block);
+        } else if (id == "Texture") {
+            readTexture(block, index);
+        } else if (id == "Material") {
+            readMaterial(block, index);
+        } else if (id == "Sphere") {
+            scene_.spheres.push_back(readObject(block, index, sphereTable()).object);
+        } else if (id == "Box") {
+            scene_.boxes.push_back(readObject(block, index, boxTable()).object);
+        } else if (id == "Cylinder") {
+            scene_.cylinders.push_back(readObject(block, index, cylinderTable()).object);
+        } else if (id == "CSG") {
+            readCsg(block, index);
+        } else if (id == "Mesh") {
+            readMesh(block, index);
+        } else if (id == "PointLight") {
+            PointLight light;
+            readParameters(block, pointLightTable(), light, diags_);
+            light.where = block.where;
+            scene_.pointLights.push_back(light);
+        } else if (id == "AreaLight") {
+            AreaLight light;
+            readParameters(block, areaLightTable(), light, diags_);
+            light.where = block.where;
+            scene_.areaLights.push_back(light);
+        } else {
+            diags_.error(block.where, "unknown block '" + id + "'", didYouMean(id, blockNames(sceneBlocks())));
+        }
+    }
+
+    void readCamera(const Block& block) {
+        Camera camera;  // the last Camera block wins (SPEC §3), each starting from the defaults
+        readParameters(block, cameraTable(), camera, diags_);
+        if (lengthSquared(camera.poi - camera.pov) == 0.0f) {
+            diags_.error(block.where, "POV and POI coincide (the view direction has zero length)");
+        }
+        scene_.camera = camera;
+    }
+
+    bool checkUnique(const std::string& what, const std::string& name, const SourceLocation& at,
+                     const Declarations& declared, size_t index) {
+        const auto it = declared.find(name);
+        if (it != declared.end() && it->second.block != index) {
+            diags_.error(at, what + " '" + name + "' is already declared at line " + std::to_string(it->second.line));
+            return false;
+        }
+        return true;
+    }
+
+    // The index of a declared texture or material; -1 (after reporting, unless already reported) otherwise.
+    int32_t resolve(const NameRef& ref, const std::string& what, const std::map<std::string, int32_t>& done,
+                    const Declarations& declared, size_t index) {
+        if (const auto it = done.find(ref.name); it != done.end()) return it->second;
+        const auto it = declared.find(ref.name);
+        if (it == declared.end()) {
+            std::vector<std::string_view> names;
+            for (const auto& [name, unused] : declared) names.push_back(name);
+            diags_.error(ref.at, "unknown " + what + " '" + ref.name + "'", didYouMean(ref.name, names));
+        } else if (it->second.block > index) {
+            diags_.error(ref.at, what + " '" + ref.name + "' is used before it is declared (at line " +
+                                     std::to_string(it->second.line) + ")");
+        }
+        // Otherwise it was declared earlier but its block failed (an unreadable image): already reported.
+        return -1;
+    }
+
+    void readTexture(const Block& block, size_t index) {
+        TextureDraft d;
+        readParameters(block, textureTable(), d, diags_);
+        Texture& t = d.texture;
+        if (t.name.empty() || t.source.empty()) return;  // reported as missing
+        if (!checkUnique("texture", t.name, d.nameAt, declaredTextures_, index)) return;
+        t.source = resolveRelativePath(file_, t.source);
+        t.image = readTextureImage(t.source, d.sourceAt, diags_);
+        if (!t.image) return;
+        t.where = block.where;
+        textures_[t.name] = int32_t(scene_.textures.size());
+        scene_.textures.push_back(std::move(t));
+    }
+
+    void readMaterial(const Block& block, size_t index) {
+        MaterialDraft d;
+        readParameters(block, materialTable(), d, diags_);
+        Material& m = d.material;
+        if (m.name.empty()) return;  // reported as missing
+        if (!checkUnique("material", m.name, d.nameAt, declaredMaterials_, index)) return;
+        int32_t* slots[kTextureSlotCount] = {&m.diffuseTexture, &m.specularTexture, &m.emissiveTexture,
+                                             &m.normalTexture};
+        for (int s = 0; s < kTextureSlotCount; ++s) {
+            if (!d.textures[s].name.empty()) {
+                *slots[s] = resolve(d.textures[s], "texture", textures_, declaredTextures_, index);
+            }
+        }
+        m.where = block.where;
+        materials_[m.name] = int32_t(scene_.materials.size());
+        scene_.materials.push_back(std::move(m));
+    }
+
+    template <class T>
+    ObjectDraft<T> readObject(const Block& block, size_t index, std::span<const ParamSpec<ObjectDraft<T>>> table) {
+        ObjectDraft<T> d;
+        readParameters(block, table, d, diags_);
+        d.object.where = block.where;
+        if (d.material.name.empty()) {
+            diags_.warning(block.where, block.identifier + " has no Material; using the default material");
+        } else {
+            d.object.material = resolve(d.material, "material", materials_, declaredMaterials_, index);
+        }
+        return d;
+    }
+
+    void readMesh(const Block& block, size_t index) {
+        ObjectDraft<Mesh> d = readObject(block, index, meshTable());
+        Mesh& mesh = d.object;
+        if (!mesh.source.empty()) {
+            mesh.source = resolveRelativePath(file_, mesh.source);
+            mesh.data = loadNamedFile(mesh.source, d.sourceAt, meshes_, readObjText);
+        }
+        if (mesh.data && !mesh.data->hasUvs && mesh.material >= 0) {
+            const Material& m = scene_.materials[size_t(mesh.material)];
+            if (m.diffuseTexture != kNoTexture || m.specularTexture != kNoTexture ||
+                m.emissiveTexture != kNoTexture || m.normalTexture != kNoTexture) {
+                diags_.warning(block.where, "mesh '" + mesh.source + "' has no texture coordinates; the textures of "
+                                            "material '" + m.name + "' are ignored for it");
+            }
+        }
+        scene_.meshes.push_back(std::move(mesh));
+    }
+
+    void readCsg(const Block& block, size_t index) {
+        ObjectDraft<Csg> d = readObject(block, index, csgTable());
+        Csg& csg = d.object;
+        if (!csg.source.empty()) {
+            csg.source = resolveRelativePath(file_, csg.source);
+            csg.tree = loadNamedFile(csg.source, d.sourceAt, csgTrees_, readCsgText);
+        }
+        scene_.csgs.push_back(std::move(csg));
+    }
+
+    // Reads a file named by a Source line once per scene; an unreadable file is reported at that line.
+    template <class Data, class Reader>
+    std::shared_ptr<const Data> loadNamedFile(const std::string& path, const SourceLocation& namedAt,
+                                              std::map<std::string, std::shared_ptr<const Data>>& cache,
+                                              Reader reader) {
+        if (const auto it = cache.find(path); it != cache.end()) return it->second;
+        std::string text, reason;
+        if (!readTextFile(path, text, reason)) {
+            diags_.error(namedAt, "cannot read '" + path + "': " + reason);
+            return nullptr;
+        }
+        std::shared_ptr<const Data> data = reader(text, path, diags_);
+        if (data) cache[path] = data;
+        return data;
+    }
+
+    const std::string& file_;
+    Diagnostics& diags_;
+    Scene scene_;
+    Declarations declaredTextures_, declaredMaterials_;
+    std::map<std::string, int32_t> textures_, materials_;  // read so far
+    std::map<std::string, std::shared_ptr<const MeshData>> meshes_;
+    std::map<std::string, std::shared_ptr<const CsgTree>> csgTrees_;
+};
+
+}  // namespace
+
+Scene readSceneText(const std::string& text, const std::string& pathForMessages, Diagnostics& diags) {
+    return SceneReader(pathForMessages, diags).read(text);
+}
+
+Scene readSceneFile(const std::string& path, Diagnostics& diags) {
+    std::string text, reason;
+    if (!readTextFile(path, text, reason)) {
+        diags.error({path, 0, 0}, "cannot read scene file: " + reason);
+        Scene scene;
+        scene.path = path;
+        return scene;
+    }
+    return readSceneText(text, path, diags);
+}
+
+}  // namespace trazo

@@ -1,0 +1,91 @@
+// Texture reader (host): FreeImage load, conversion to float RGB, scanline 0 (FreeImage's bottom row) first.
+#include "scene/texture_reader.h"
+
+#include <FreeImage.h>
+
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "scene/block_lexer.h"
+
+namespace trazo {
+namespace {
+
+// FreeImage reports decoding problems through a process-wide callback; keep the last one for the message.
+std::mutex gFreeImageMutex;
+std::string gFreeImageMessage;
+
+void captureFreeImageMessage(FREE_IMAGE_FORMAT, const char* message) {
+    gFreeImageMessage = message ? message : "";
+}
+
+struct BitmapDeleter {
+    void operator()(FIBITMAP* b) const {
+        if (b) FreeImage_Unload(b);
+    }
+};
+using Bitmap = std::unique_ptr<FIBITMAP, BitmapDeleter>;
+
+void copyTexels(FIBITMAP* converted, bool isFloat, TextureImage& image) {
+    image.texels.resize(size_t(image.width) * size_t(image.height));
+    for (int y = 0; y < image.height; ++y) {
+        const BYTE* row = FreeImage_GetScanLine(converted, y);
+        Vec3* out = &image.texels[size_t(y) * size_t(image.width)];
+        for (int x = 0; x < image.width; ++x) {
+            if (isFloat) {
+                const FIRGBF& p = reinterpret_cast<const FIRGBF*>(row)[x];
+                out[x] = {p.red, p.green, p.blue};
+            } else {
+                const BYTE* p = row + 3 * x;
+                out[x] = Vec3(p[FI_RGBA_RED], p[FI_RGBA_GREEN], p[FI_RGBA_BLUE]) / 255.0f;
+            }
+        }
+    }
+}
+
+}  // namespace
+
+std::shared_ptr<const TextureImage> readTextureImage(const std::string& path, const SourceLocation& where,
+                                                     Diagnostics& diags) {
+    // FreeImage_Load gives no OS reason, so check that the file opens first.
+    std::string reason;
+    if (!checkReadable(path, reason)) {
+        diags.error(where, "cannot read texture '" + path + "': " + reason);
+        return nullptr;
+    }
+
+    std::lock_guard<std::mutex> lock(gFreeImageMutex);
+    gFreeImageMessage.clear();
+    FreeImage_SetOutputMessage(captureFreeImageMessage);
+    FREE_IMAGE_FORMAT fif = FreeImage_GetFileType(path.c_str(), 0);
+    if (fif == FIF_UNKNOWN) fif = FreeImage_GetFIFFromFilename(path.c_str());
+    if (fif == FIF_UNKNOWN || !FreeImage_FIFSupportsReading(fif)) {
+        diags.error(where, "cannot decode texture '" + path + "': unknown image format");
+        return nullptr;
+    }
+    Bitmap loaded(FreeImage_Load(fif, path.c_str(), 0));
+    if (!loaded) {
+        const std::string why = gFreeImageMessage.empty() ? "the image is damaged or unsupported" : gFreeImageMessage;
+        diags.error(where, "cannot decode texture '" + path + "': " + why);
+        return nullptr;
+    }
+    // 8-bit images of any layout (palette, grey, RGBA) go through 24-bit RGB; wider ones through float RGB.
+    const bool isFloat = FreeImage_GetImageType(loaded.get()) != FIT_BITMAP;
+    Bitmap converted(isFloat ? FreeImage_ConvertToRGBF(loaded.get()) : FreeImage_ConvertTo24Bits(loaded.get()));
+    if (!converted) {
+        diags.error(where, "cannot decode texture '" + path + "': pixel type not convertible to RGB");
+        return nullptr;
+    }
+    auto image = std::make_shared<TextureImage>();
+    image->width = int(FreeImage_GetWidth(converted.get()));
+    image->height = int(FreeImage_GetHeight(converted.get()));
+    if (image->width <= 0 || image->height <= 0) {
+        diags.error(where, "cannot decode texture '" + path + "': the image is empty");
+        return nullptr;
+    }
+    copyTexels(converted.get(), isFloat, *image);
+    return image;
+}
+
+}  // namespace trazo

@@ -1,0 +1,99 @@
+// Tests of the texture reader: row order (row 0 = bottom), 8-bit and float paths, and its errors.
+#include "scene/texture_reader.h"
+
+#include <FreeImage.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "test_paths.h"
+
+namespace trazo {
+namespace {
+
+// A 2x2 PNG: bottom-left red, bottom-right green, top-left blue, top-right grey 128.
+// FreeImage's y = 0 is the bottom scanline.
+std::string writeTinyPng(const std::string& name) {
+    const std::string path = test::tempPath(name);
+    FIBITMAP* bm = FreeImage_Allocate(2, 2, 24);
+    RGBQUAD red{0, 0, 255, 0}, green{0, 255, 0, 0}, blue{255, 0, 0, 0}, grey{128, 128, 128, 0};  // B, G, R, A
+    FreeImage_SetPixelColor(bm, 0, 0, &red);
+    FreeImage_SetPixelColor(bm, 1, 0, &green);
+    FreeImage_SetPixelColor(bm, 0, 1, &blue);
+    FreeImage_SetPixelColor(bm, 1, 1, &grey);
+    EXPECT_TRUE(FreeImage_Save(FIF_PNG, bm, path.c_str(), 0));
+    FreeImage_Unload(bm);
+    return path;
+}
+
+void expectTexel(const TextureImage& image, int x, int y, Vec3 expected) {
+    const Vec3 t = image.texels[size_t(y * image.width + x)];
+    EXPECT_FLOAT_EQ(t.x, expected.x) << x << "," << y;
+    EXPECT_FLOAT_EQ(t.y, expected.y) << x << "," << y;
+    EXPECT_FLOAT_EQ(t.z, expected.z) << x << "," << y;
+}
+
+TEST(TextureReaderTest, PngRowZeroIsTheBottomRow) {
+    Diagnostics diags;
+    const auto image = readTextureImage(writeTinyPng("tiny.png"), {"t.scene", 3, 0}, diags);
+    ASSERT_TRUE(image);
+    EXPECT_TRUE(diags.items.empty());
+    ASSERT_EQ(image->width, 2);
+    ASSERT_EQ(image->height, 2);
+    ASSERT_EQ(image->texels.size(), 4u);
+    expectTexel(*image, 0, 0, {1, 0, 0});  // bottom-left
+    expectTexel(*image, 1, 0, {0, 1, 0});
+    expectTexel(*image, 0, 1, {0, 0, 1});  // top-left
+    const float g = 128.0f / 255.0f;       // no sRGB decoding
+    expectTexel(*image, 1, 1, {g, g, g});
+}
+
+TEST(TextureReaderTest, FloatImagesKeepTheirValues) {
+    const std::string path = test::tempPath("float.pfm");
+    FIBITMAP* bm = FreeImage_AllocateT(FIT_RGBF, 2, 1);
+    auto* row = reinterpret_cast<FIRGBF*>(FreeImage_GetScanLine(bm, 0));
+    row[0] = {0.25f, 2.5f, 0.0f};
+    row[1] = {1.0f, 0.5f, 7.0f};
+    ASSERT_TRUE(FreeImage_Save(FIF_PFM, bm, path.c_str(), 0));
+    FreeImage_Unload(bm);
+    Diagnostics diags;
+    const auto image = readTextureImage(path, {"t.scene", 3, 0}, diags);
+    ASSERT_TRUE(image);
+    expectTexel(*image, 0, 0, {0.25f, 2.5f, 0.0f});
+    expectTexel(*image, 1, 0, {1.0f, 0.5f, 7.0f});
+}
+
+TEST(TextureReaderTest, GreyscaleBecomesRgb) {
+    const std::string path = test::tempPath("grey.png");
+    FIBITMAP* bm = FreeImage_Allocate(1, 1, 8);
+    RGBQUAD* palette = FreeImage_GetPalette(bm);
+    for (int i = 0; i < 256; ++i) palette[i] = {BYTE(i), BYTE(i), BYTE(i), 0};
+    FreeImage_GetScanLine(bm, 0)[0] = 51;
+    ASSERT_TRUE(FreeImage_Save(FIF_PNG, bm, path.c_str(), 0));
+    FreeImage_Unload(bm);
+    Diagnostics diags;
+    const auto image = readTextureImage(path, {"t.scene", 3, 0}, diags);
+    ASSERT_TRUE(image);
+    expectTexel(*image, 0, 0, {0.2f, 0.2f, 0.2f});
+}
+
+TEST(TextureReaderTest, MissingFileIsReportedAtTheSourceLine) {
+    Diagnostics diags;
+    EXPECT_FALSE(readTextureImage("/nonexistent/trazo/t.png", {"t.scene", 7, 0}, diags));
+    ASSERT_EQ(diags.items.size(), 1u);
+    EXPECT_EQ(formatDiagnostic(diags.items[0]),
+              "t.scene:7: error: cannot read texture '/nonexistent/trazo/t.png': No such file or directory");
+}
+
+TEST(TextureReaderTest, UndecodableFileIsReported) {
+    const std::string path = test::tempPath("junk.png");
+    std::ofstream(path) << "this is not an image";
+    Diagnostics diags;
+    EXPECT_FALSE(readTextureImage(path, {"t.scene", 9, 0}, diags));
+    ASSERT_EQ(diags.items.size(), 1u);
+    const std::string message = formatDiagnostic(diags.items[0]);
+    EXPECT_EQ(message.rfind("t.scene:9: error: cannot decode texture '" + path + "': ", 0), 0u) << message;
+}
+
+}  // namespace
+}  // namespace trazo
