@@ -1,0 +1,74 @@
+// Ray–sphere intersection (host and device): the stable quadratic of Ray Tracing Gems ch. 7, made exact
+// where a huge sphere is seen from close by.
+#pragma once
+
+#include "core/hd.h"
+#include "core/ray.h"
+#include "core/vec3.h"
+#include "geometry/exact_float.h"
+#include "geometry/shapes.h"
+
+namespace trazo {
+
+// Nearest hit with tMin < t < tMax; fills hit.t and the unit outward normal. From inside the
+// sphere the hit is the exit point, whose outward normal points along the ray.
+//
+// |f + t·d|² = r² with f = o − centre: a·t² + 2b·t + c = 0 (b is half the textbook b; d need not be
+// unit, so a = d·d stays in every formula and t remains in units of ray.direction). The roots are
+// q/a and c/q with q = −b − sign(b)·√Δ, Δ = b² − a·c, which never cancels (RTG ch. 7, after
+// Numerical Recipes §5.6). What is left to get right is the rounding of the inputs to q and c:
+//  - c/q is the near root, so c must be good to a few ulps of itself. For a huge sphere seen from
+//    close (a ground sphere), c = |f|² − r² is small while |f|² and r² are ~r²: the rounding of f
+//    alone would cost ε·r². So f is kept exactly as fHi + fLo and c is a compensated sum.
+//  - Δ: RTG writes it as a·(r² − |l|²), l = f − (b/a)·d the closest point of the line to the centre,
+//    which avoids b² ≈ a·c cancelling for a small sphere far away. Its error is ~ε·a·|l|·(r + |l|),
+//    and b² − a·c (from accurate b, c) errs by ~ε·(b² + a·|c|): each form is used where it is the
+//    better one. l comes from d × (f × d)/a, with f × d compensated, so it is accurate to ε·|l|
+//    rather than ε·|f| (RTG's subtraction) — and so is the normal, from l ∓ d·√Δ/a.
+TRAZO_HD bool intersectSphere(const SphereShape& s, const Ray& ray, float tMin, float tMax, ShapeHit& hit) {
+    const TwoFloat fx = twoSum(ray.origin.x, -s.center.x);
+    const TwoFloat fy = twoSum(ray.origin.y, -s.center.y);
+    const TwoFloat fz = twoSum(ray.origin.z, -s.center.z);
+    const Vec3 f(fx.hi, fy.hi, fz.hi);
+    const Vec3 fLo(fx.lo, fy.lo, fz.lo);
+    const Vec3 d = ray.direction;
+    const float r = s.radius;
+
+    const float a = dot(d, d);
+    // Plain b suffices: near the surface f is almost along the normal, so f·d rounds relative to b.
+    const float b = dot(f, d) + dot(fLo, d);
+    // (fHi + fLo)² = fHi² + 2·fHi·fLo + fLo²; fLo² is below an ulp of anything that matters here.
+    const float c = lengthSquaredMinusSquareAccurate(f, r) + 2.0f * dot(f, fLo);
+    const Vec3 l = cross(d, crossAccurate(f, d) + cross(fLo, d)) * (1.0f / a);
+    const float lLength = length(l);
+
+    // The form with the smaller of the two error estimates above (their common factor ε dropped).
+    const bool nearForm = b * b + a * fabsf(c) < a * lLength * (r + lLength);
+    const float discriminant = nearForm ? fmaf(b, b, -a * c) : a * ((r - lLength) * (r + lLength));
+    if (!(discriminant >= 0.0f)) return false;  // also rejects NaN from a zero direction
+    const float root = sqrtf(discriminant);
+    const float q = -b - copysignf(root, b);
+    float tNear = q / a;
+    float tFar = q != 0.0f ? c / q : tNear;  // q = 0 only when the line touches the sphere at t = 0
+    if (tNear > tFar) {
+        const float swap = tNear;
+        tNear = tFar;
+        tFar = swap;
+    }
+    // The hit point relative to the centre is l ∓ d·√Δ/a for the near/far root: small numbers only,
+    // where f + t·d would carry the rounding of f and t, both ~ε·|f|.
+    const float halfChord = root / a;
+    if (tNear > tMin && tNear < tMax) {
+        hit.t = tNear;
+        hit.normal = normalize(l - d * halfChord);
+        return true;
+    }
+    if (tFar > tMin && tFar < tMax) {
+        hit.t = tFar;
+        hit.normal = normalize(l + d * halfChord);
+        return true;
+    }
+    return false;
+}
+
+}  // namespace trazo
