@@ -143,7 +143,9 @@ std::string describeFeatures(FeatureMask mask) {
                                          "emissive",     "indirect",    "textures",   "meshes",  "csg"};
     std::string s;
     for (int i = 0; i < 10; ++i) {
-        if (mask & (1u << i)) s += (s.empty() ? "" : " ") + std::string(kNames[i]);
+        if (!(mask & (1u << i))) continue;
+        if (!s.empty()) s += ' ';
+        s += kNames[i];
     }
     return s.empty() ? "none" : s;
 }

@@ -26,6 +26,17 @@ namespace trazo {
 //    better one. l comes from d × (f × d)/a, with f × d compensated, so it is accurate to ε·|l|
 //    rather than ε·|f| (RTG's subtraction) — and so is the normal, from l ∓ d·√Δ/a.
 TRAZO_HD bool intersectSphere(const SphereShape& s, const Ray& ray, float tMin, float tMax, ShapeHit& hit) {
+    {
+        // Cheap conservative reject first (most rays miss most spheres): the line's squared distance to
+        // the centre is |f × d|²/|d|², off in plain float by a few ulps of |o| + |centre|; miss only
+        // beyond that margin.
+        const Vec3 f = ray.origin - s.center;
+        const Vec3 fd = cross(f, ray.direction);
+        const float margin =
+            1e-5f * (maxComponent(abs(ray.origin)) + maxComponent(abs(s.center)) + maxComponent(abs(f)));
+        const float reach = s.radius + margin;
+        if (dot(fd, fd) > reach * reach * dot(ray.direction, ray.direction)) return false;
+    }
     const TwoFloat fx = twoSum(ray.origin.x, -s.center.x);
     const TwoFloat fy = twoSum(ray.origin.y, -s.center.y);
     const TwoFloat fz = twoSum(ray.origin.z, -s.center.z);

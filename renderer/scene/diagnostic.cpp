@@ -6,8 +6,12 @@ namespace trazo {
 std::string formatDiagnostic(const Diagnostic& d) {
     std::string s = d.where.file;
     if (d.where.line > 0) {
-        s += ":" + std::to_string(d.where.line);
-        if (d.where.column > 0) s += ":" + std::to_string(d.where.column);
+        s += ':';
+        s += std::to_string(d.where.line);
+        if (d.where.column > 0) {
+            s += ':';
+            s += std::to_string(d.where.column);
+        }
     }
     s += d.severity == Severity::Error ? ": error: " : ": warning: ";
     s += d.message;
