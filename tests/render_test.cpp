@@ -116,6 +116,45 @@ TEST(RenderRefraction, TiltedSlabFollowsSnellsLaw) {
     EXPECT_LT(worst, 5e-5);
 }
 
+// A facing plate in front of the camera, lit head-on by a point light at the camera: with σ = 0 and no
+// specular term, its direct light is Kd·C·cos θ; the rest of SPEC §5's colour formula is checked around it.
+std::string plateScene(const std::string& material) {
+    return "SceneSettings\n{\nRenderWidth 1\nRenderHeight 1\nBackgroundColor 0.2 0.4 0.6\n"
+           "ReflectionQuality 1\nReflectionSteps 1\nIndirectQuality 0\n}\n"
+           "Camera\n{\nPOV 0 0 10\nPOI 0 0 0\nFOV 10\n}\n"
+           "Material\n{\nName plate\n" + material + "}\n"
+           "Box\n{\nMaterial plate\nScale 10 10 0.1\n}\n"
+           "PointLight\n{\nPosition 0 0 10\nColor 0.5 0.5 0.5\n}\n";
+}
+
+// Emission is added on top of everything: with no light reaching it, a surface shows exactly Ke.
+TEST(RenderClosedForm, EmissiveSurfaceShowsItsColour) {
+    const RenderedImage image = renderSceneText(
+        plateScene("DiffuseColor 0 0 0\nSpecularColor 0 0 0\nEmissiveColor 0.3 0.6 0.9\n"), {});
+    EXPECT_FLOAT_EQ(image.at(0, 0).x, 0.3f);
+    EXPECT_FLOAT_EQ(image.at(0, 0).z, 0.9f);
+}
+
+// c = Direct·(1 − a) + Ks ⊙ R·a with a = ReflectionAmount ([decided] lerp order): the mirror ray goes back
+// past the camera and returns the background.
+TEST(RenderClosedForm, ReflectionBlendsByReflectionAmount) {
+    const RenderedImage image = renderSceneText(
+        plateScene("DiffuseColor 0.8 0.8 0.8\nSpecularColor 0.5 1 1\nRoughness 0\nReflectionAmount 0.25\n"), {});
+    // Specular term at normal incidence: CT = 1/(4m²) with m = 0.01, times Ks and the light colour.
+    const double ct = 1.0 / (4 * 0.01 * 0.01);
+    const double directR = 0.5 * (0.8 + 0.5 * ct), directG = 0.5 * (0.8 + 1.0 * ct);
+    EXPECT_NEAR(image.at(0, 0).x, 0.75 * directR + 0.25 * 0.5 * 0.2, 1e-3 * directR);
+    EXPECT_NEAR(image.at(0, 0).y, 0.75 * directG + 0.25 * 1.0 * 0.4, 1e-3 * directG);
+}
+
+// c·Opacity + T·(1 − Opacity): a thin plate of index 1 lets the background through unchanged.
+TEST(RenderClosedForm, OpacityBlendsWithTransmission) {
+    const RenderedImage image = renderSceneText(
+        plateScene("DiffuseColor 0.8 0.8 0.8\nSpecularColor 0 0 0\nRoughness 0\nOpacity 0.25\n"), {});
+    EXPECT_NEAR(image.at(0, 0).x, 0.25 * 0.5 * 0.8 + 0.75 * 0.2, 1e-5);
+    EXPECT_NEAR(image.at(0, 0).z, 0.25 * 0.5 * 0.8 + 0.75 * 0.6, 1e-5);
+}
+
 std::string areaLightScene(int passesHint, int width) {
     (void)passesHint;
     return "SceneSettings\n{\nRenderWidth " + std::to_string(width) + "\nRenderHeight " + std::to_string(width) +
