@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "backends/backend.h"
 #include "test_paths.h"
@@ -26,10 +25,7 @@ CommandResult runTrazo(const std::string& arguments) {
     const int raw = std::system(command.c_str());
     CommandResult r;
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    std::ifstream in(errFile);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    r.errors = ss.str();
+    r.errors = readFileText(errFile);
     return r;
 }
 
@@ -53,12 +49,10 @@ TEST(Cli, RendersAFileAndWritesStats) {
     const CommandResult r = runTrazo("--render " + scene + " -o " + out + " --stats " + stats + " --quiet");
     ASSERT_EQ(r.status, 0) << r.errors;
     EXPECT_TRUE(fs::exists(out));
-    std::ifstream in(stats);
-    std::stringstream json;
-    json << in.rdbuf();
+    const std::string json = readFileText(stats);
     for (const char* key : {"\"parse_s\"", "\"upload_s\"", "\"render_s\"", "\"spp\"", "\"rays\"", "\"mrays_per_s\"",
                             "\"backend\"", "\"device\"", "\"width\": 16", "\"height\": 12"})
-        EXPECT_NE(json.str().find(key), std::string::npos) << key << " missing in " << json.str();
+        EXPECT_NE(json.find(key), std::string::npos) << key << " missing in " << json;
     EXPECT_NE(r.errors.find("rendering on cpu"), std::string::npos) << "auto must say which backend it used";
 }
 
@@ -119,12 +113,10 @@ TEST(Cli, TimeBudgetStopsTheRender) {
     const CommandResult r =
         runTrazo("--render " + scene + " -o " + tempPath("timed.bmp") + " --time 0.3 --quiet --stats " + stats);
     ASSERT_EQ(r.status, 0) << r.errors;
-    std::ifstream in(stats);
-    std::stringstream json;
-    json << in.rdbuf();
-    const auto pos = json.str().find("\"render_s\": ");
+    const std::string json = readFileText(stats);
+    const auto pos = json.find("\"render_s\": ");
     ASSERT_NE(pos, std::string::npos);
-    EXPECT_LT(std::stod(json.str().substr(pos + 12)), 1.0);
+    EXPECT_LT(std::stod(json.substr(pos + 12)), 1.0);
 }
 
 // Every scene shipped in scenes/ renders (tiny, one pass); scenes with meshes or CSG warn once.
@@ -138,10 +130,8 @@ TEST(Cli, EveryShippedSceneRenders) {
             runTrazo("--render " + entry.path().string() + " -o " + out + " --width 24 --height 24 --spp 1 --quiet");
         EXPECT_EQ(r.status, 0) << entry.path() << "\n" << r.errors;
         EXPECT_TRUE(fs::exists(out)) << entry.path();
-        std::ifstream in(entry.path());
-        std::stringstream text;
-        text << in.rdbuf();
-        const bool hasMeshOrCsg = text.str().find("\nMesh") != std::string::npos || text.str().find("\nCSG") != std::string::npos;
+        const std::string text = readFileText(entry.path().string());
+        const bool hasMeshOrCsg = text.find("\nMesh") != std::string::npos || text.find("\nCSG") != std::string::npos;
         if (hasMeshOrCsg) EXPECT_NE(r.errors.find("warning"), std::string::npos) << entry.path();
     }
     EXPECT_GE(count, 19);  // the seed's 19 scene files (the 20th seed file is the .csg)

@@ -1,10 +1,6 @@
 // CPU and CUDA backends run the same renderSample(): their images must agree (skipped without a GPU).
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
 #include "backends/backend.h"
 #include "render_harness.h"
 #include "test_paths.h"
@@ -12,20 +8,13 @@
 namespace trazo::test {
 namespace {
 
-std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 class CudaAgreement : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CudaAgreement, SameImageAsCpu) {
     std::string device;
     if (!cudaDeviceAvailable(device)) GTEST_SKIP() << "no CUDA device (" << device << "): CPU/CUDA agreement not checked";
     // Shrink the seed scene so the CPU side stays quick; the scene's own settings otherwise.
-    std::string text = readText(sourcePath(std::string("scenes/") + GetParam()));
+    std::string text = readFileText(sourcePath(std::string("scenes/") + GetParam()));
     for (const char* key : {"RenderWidth 512", "RenderHeight 512"}) {
         const auto pos = text.find(key);
         if (pos != std::string::npos) text.replace(pos, std::string(key).size(), std::string(key).substr(0, 12) + " 96");

@@ -2,6 +2,8 @@
 #include "test_paths.h"
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <unistd.h>
 
 namespace trazo::test {
@@ -17,6 +19,13 @@ std::string tempPath(const std::string& name) {
         return d;
     }();
     return (dir / name).string();
+}
+
+std::string readFileText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
 }
 
 }  // namespace trazo::test
