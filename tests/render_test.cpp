@@ -20,10 +20,10 @@ DVec normalized(DVec a) { return a * (1.0 / std::sqrt(dot(a, a))); }
 
 // Pixel-centre camera ray direction in double precision, from SPEC §3 (vertical FOV, +Y up, pixel (0,0)
 // top-left), for a camera on the +Z axis looking at the origin. Independent of camera_frame.h.
-DVec pixelDirection(int i, int j, int w, int h, double fovDegrees) {
+DVec pixelDirection(int i, int j, int w, int h, double fovDegrees, double ox = 0.5, double oy = 0.5) {
     const double t = std::tan(0.5 * fovDegrees * M_PI / 180.0);
-    const double sx = (2.0 * (i + 0.5) / w - 1.0) * t * double(w) / h;
-    const double sy = (1.0 - 2.0 * (j + 0.5) / h) * t;
+    const double sx = (2.0 * (i + ox) / w - 1.0) * t * double(w) / h;
+    const double sy = (1.0 - 2.0 * (j + oy) / h) * t;
     return normalized({sx, sy, -1.0});
 }
 
@@ -35,9 +35,10 @@ std::string num(double v) {
 
 // A Lambertian wall (front face z = 0) under a point light, camera at distance `scale`·10; every length
 // is multiplied by `scale`.
-std::string wallScene(double scale) {
+std::string wallScene(double scale, int antialiasing = 1) {
     const std::string s = num(scale);
-    return "SceneSettings\n{\nRenderWidth 48\nRenderHeight 32\nReflectionQuality 0\nIndirectQuality 0\n}\n"
+    return "SceneSettings\n{\nRenderWidth 48\nRenderHeight 32\nReflectionQuality 0\nIndirectQuality 0\n"
+           "Antialiasing " + std::to_string(antialiasing) + "\n}\n"
            "Camera\n{\nPOV 0 0 " + num(10 * scale) + "\nPOI 0 0 0\nFOV 40\n}\n"
            "Material\n{\nName wall\nDiffuseColor 0.7 0.5 0.3\nSpecularColor 0 0 0\nRoughness 0\n}\n"
            "Box\n{\nMaterial wall\nTranslation 0 0 -0.5\nScale " + num(100 * scale) + " " + num(100 * scale) + " " + s +
@@ -62,6 +63,28 @@ TEST(RenderClosedForm, PointLightOverLambertianWall) {
                               std::abs(got.z - 0.3 * 1.0 * c)});
         }
     EXPECT_LT(worst, 2e-5);
+}
+
+// Antialiasing k² averages the k×k sub-pixel centres (SPEC §5 Pixel): after one cycle of k² passes each
+// pixel is exactly that mean, whatever order the passes visited them in.
+TEST(RenderClosedForm, AntialiasingAveragesTheSubPixelCentres) {
+    for (int k : {2, 4}) {
+        const RenderedImage image = renderSceneText(wallScene(1.0, k * k), {.passes = uint32_t(k * k)});
+        ASSERT_EQ(image.width, 48);
+        const DVec pov{0, 0, 10}, light{1.5, -2, 3};
+        double worst = 0;
+        for (int j = 0; j < image.height; ++j)
+            for (int i = 0; i < image.width; ++i) {
+                double mean = 0;
+                for (int a = 0; a < k; ++a)
+                    for (int b = 0; b < k; ++b) {
+                        const DVec d = pixelDirection(i, j, image.width, image.height, 40.0, (a + 0.5) / k, (b + 0.5) / k);
+                        mean += normalized(light - (pov + d * (-pov.z / d.z))).z / (k * k);
+                    }
+                worst = std::max(worst, std::abs(image.at(i, j).x - 0.7 * 0.9 * mean));
+            }
+        EXPECT_LT(worst, 2e-5) << "Antialiasing " << k * k;
+    }
 }
 
 // No shadow acne and no scale-dependent epsilon: the same scene at 1e-3 and 1e4 times the size renders
