@@ -1,7 +1,9 @@
 // trazo_bench: time, Mrays/s and error of seed scenes at their own settings, per backend, next to the
-// thesis's GTX 560 figures. Usage: trazo_bench [--threads N] [--reference-cycles K] SCENE...
+// thesis's GTX 560 figures. Usage: trazo_bench [--threads N] [--reference-cycles K] [--passes P] SCENE...
+// --passes P renders P passes instead of one full cycle (e.g. for instruction counts under callgrind).
 // Error: RMSE (and relative RMSE) of the one-cycle image against a K-cycle reference of the same backend
-// with another seed; K = 0 skips it.
+// with another seed; K = 0 skips it. "all-features s" renders the same passes with the unspecialised
+// (all-features) instance of renderSample, so the last column is what feature specialisation saves.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +13,7 @@
 
 #include "backends/backend.h"
 #include "device/flatten.h"
+#include "integrator/sample_variants.h"
 #include "render/progressive_render.h"
 #include "render/resolve.h"
 #include "scene/scene_reader.h"
@@ -55,10 +58,12 @@ std::vector<Vec3> render(Backend& b, const Scene& scene, uint32_t passes, uint32
 int main(int argc, char** argv) {
     unsigned threads = 0;
     uint32_t referenceCycles = 4;
+    uint32_t fixedPasses = 0;
     std::vector<std::string> scenes;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = std::stoul(argv[++i]);
         else if (!std::strcmp(argv[i], "--reference-cycles") && i + 1 < argc) referenceCycles = std::stoul(argv[++i]);
+        else if (!std::strcmp(argv[i], "--passes") && i + 1 < argc) fixedPasses = std::stoul(argv[++i]);
         else scenes.push_back(argv[i]);
     }
     if (scenes.empty()) {
@@ -71,8 +76,8 @@ int main(int argc, char** argv) {
     if (cudaDeviceAvailable(device)) choices.push_back(BackendChoice::Cuda);
     else std::printf("# no CUDA device (%s): CPU only\n", device.c_str());
 
-    std::printf("| scene | backend | device | size | passes | render s | Mrays/s | rays/pixel | RMSE | rel. RMSE | thesis s (GTX 560) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| scene | backend | device | size | passes | render s | Mrays/s | rays/pixel | RMSE | rel. RMSE | thesis s (GTX 560) | all-features s | specialised speed-up |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const std::string& path : scenes) {
         Diagnostics diags;
         const Scene scene = readSceneFile(path, diags);
@@ -81,7 +86,7 @@ int main(int argc, char** argv) {
             return 2;
         }
         const FlattenResult flat = flatten(scene);
-        const uint32_t cycle = fullCyclePasses(flat.arrays);
+        const uint32_t cycle = fixedPasses ? fixedPasses : fullCyclePasses(flat.arrays);
         for (BackendChoice choice : choices) {
             std::string error;
             auto backend = createBackend(choice, threads, error);
@@ -102,11 +107,19 @@ int main(int argc, char** argv) {
                 rmse = std::sqrt(se / (3.0 * image.size()));
                 relative = rmse / (mean / image.size());
             }
+            SceneArrays oracleArrays = flat.arrays;
+            oracleArrays.features |= kSpecialisedFeatures;
+            RenderOutcome oracle;
+            backend->upload(oracleArrays);
+            render(*backend, scene, cycle, 1, oracle);
+            backend->upload(flat.arrays);
             const double pixels = double(scene.settings.renderWidth) * scene.settings.renderHeight;
-            std::printf("| %s | %s | %s | %dx%d | %u | %.4f | %.2f | %.1f | %.5f | %.4f | %.4f |\n", path.c_str(),
+            std::printf("| %s | %s | %s | %dx%d | %u | %.4f | %.2f | %.1f | %.5f | %.4f | %.4f | %.4f | %.3f |\n",
+                        path.c_str(),
                         backend->name().c_str(), backend->deviceName().c_str(), scene.settings.renderWidth,
                         scene.settings.renderHeight, timed.passes, timed.seconds, timed.rays / timed.seconds * 1e-6,
-                        timed.rays / pixels, rmse, relative, thesisSeconds(path));
+                        timed.rays / pixels, rmse, relative, thesisSeconds(path), oracle.seconds,
+                        oracle.seconds / timed.seconds);
             std::fflush(stdout);
         }
     }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "device/flatten.h"
+#include "integrator/sample_variants.h"
 #include "render/progressive_render.h"
 #include "render/resolve.h"
 #include "scene/scene_reader.h"
@@ -13,14 +14,15 @@
 
 namespace trazo::test {
 
-RenderedImage renderSceneText(const std::string& sceneText, const RenderRequest& request) {
-    Diagnostics diags;
-    const Scene scene = readSceneText(sceneText, tempPath("harness.scene"), diags);
+namespace {
+
+RenderedImage renderScene(const Scene& scene, const Diagnostics& diags, const RenderRequest& request) {
     if (diags.hasErrors()) {
         for (const auto& d : diags.items) ADD_FAILURE() << formatDiagnostic(d);
         return {};
     }
-    const FlattenResult flat = flatten(scene);
+    FlattenResult flat = flatten(scene);
+    if (request.allFeatures) flat.arrays.features |= kSpecialisedFeatures;
     std::string error;
     auto backend = createBackend(request.backend, request.threads, error);
     if (!backend) {
@@ -28,8 +30,8 @@ RenderedImage renderSceneText(const std::string& sceneText, const RenderRequest&
         return {};
     }
     RenderedImage image;
-    image.width = scene.settings.renderWidth;
-    image.height = scene.settings.renderHeight;
+    image.width = request.width ? request.width : scene.settings.renderWidth;
+    image.height = request.height ? request.height : scene.settings.renderHeight;
     backend->upload(flat.arrays);
     backend->resize(image.width, image.height);
     const FrameParams frame{makeCameraFrame(scene.camera.pov, scene.camera.poi, scene.camera.fovDegrees,
@@ -42,6 +44,20 @@ RenderedImage renderSceneText(const std::string& sceneText, const RenderRequest&
     backend->readAccumulation(accum);
     image.pixels = resolveImage(accum);
     return image;
+}
+
+}  // namespace
+
+RenderedImage renderSceneText(const std::string& sceneText, const RenderRequest& request) {
+    Diagnostics diags;
+    const Scene scene = readSceneText(sceneText, tempPath("harness.scene"), diags);
+    return renderScene(scene, diags, request);
+}
+
+RenderedImage renderSceneFile(const std::string& path, const RenderRequest& request) {
+    Diagnostics diags;
+    const Scene scene = readSceneFile(path, diags);
+    return renderScene(scene, diags, request);
 }
 
 double rmse(const RenderedImage& a, const RenderedImage& b) {

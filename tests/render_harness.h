@@ -21,10 +21,13 @@ struct RenderRequest {
     unsigned threads = 2;
     uint32_t seed = 0;
     BackendChoice backend = BackendChoice::Cpu;
+    bool allFeatures = false;  // run the all-features instance of renderSample (the oracle)
+    int width = 0, height = 0;  // 0: the scene's RenderWidth/RenderHeight
 };
 
 // Fails the current test (ADD_FAILURE) and returns an empty image when the scene does not read.
 RenderedImage renderSceneText(const std::string& sceneText, const RenderRequest& request);
+RenderedImage renderSceneFile(const std::string& path, const RenderRequest& request);
 
 // Root-mean-square difference over all channels.
 double rmse(const RenderedImage& a, const RenderedImage& b);

@@ -49,6 +49,9 @@ TRAZO_HD Vec3 shadeFromPoint(const SceneView& scene, const ShadingPoint& sp, con
     return shade(sp.n, l, sp.v, color, m);
 }
 
+// F: the scene's specialised feature bits (sample_variants.h); without kFeatureAreaLights the area-light
+// loop is compiled out.
+template <FeatureMask F>
 TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
                           const StrataKey& strata, SampleStream& rng, uint32_t& rays) {
     Vec3 sum(0.0f);
@@ -56,6 +59,7 @@ TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const 
         const PointLightData& light = scene.pointLights[i];
         sum += shadeFromPoint(scene, sp, m, light.position, light.color, rays);
     }
+    if constexpr ((F & kFeatureAreaLights) != 0) {
     for (uint32_t i = 0; i < scene.areaLights.count; ++i) {
         const AreaLightData& light = scene.areaLights[i];
         const uint32_t s = strata.stratum(kGridAreaLightBase + i, light.cellsU * light.cellsV);
@@ -63,6 +67,7 @@ TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const 
         const float sv = (float(s / light.cellsU) + rng.next()) / float(light.cellsV);
         const Vec3 x = light.rect.center + light.rect.halfU * (2.0f * su - 1.0f) + light.rect.halfV * (2.0f * sv - 1.0f);
         sum += shadeFromPoint(scene, sp, m, x, light.color, rays);
+    }
     }
     return sum;
 }

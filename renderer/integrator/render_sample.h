@@ -1,6 +1,8 @@
 // renderSample(): one sample of one pixel, (scene, frame, pixel, pass) -> RGB. The whole integrator of
 // SPEC §5, written once for the CPU backend and the CUDA kernel. The recursion of Color(depth) becomes
 // an explicit, bounded stack of pending rays, each carrying the weight its colour enters the pixel with.
+// Template parameter F: the feature bits the code is specialised for (sample_variants.h); code for a
+// feature outside F is compiled out, and the all-features instance is the oracle every variant must match.
 #pragma once
 
 #include "integrator/direct_light.h"
@@ -47,6 +49,7 @@ TRAZO_HD Vec3 sampleReflection(const ShadingPoint& sp, Vec3 d, const MaterialDat
     return directionInCone(mirror, theta, phi);
 }
 
+template <FeatureMask F>
 TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
                            uint32_t pass, uint32_t& rays) {
     const uint32_t pixelIndex = py * frame.camera.width + px;
@@ -83,7 +86,9 @@ TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uin
         const Vec3 pError = hitPointError(r.ray, hit.t);
         const bool frontFacing = dot(d, hit.normal) < 0.0f;
 
-        if (!frontFacing && m.opacity < 1.0f) {
+        constexpr bool kRefraction = (F & kFeatureRefraction) != 0;
+        constexpr bool kReflection = (F & kFeatureReflection) != 0;
+        if (kRefraction && !frontFacing && m.opacity < 1.0f) {
             // Leaving a transparent solid: refract out (η = n/1) or reflect internally; nothing is shaded.
             if (r.segments >= kMaxTransmissionSegments) continue;
             const Vec3 nInside = -hit.normal;
@@ -99,19 +104,19 @@ TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uin
         const ShadingPoint sp{p, pError, ng, ng, -d};
         const StrataKey strata{frame.seed, pixelIndex, pass, r.node};
 
-        const float a = materialReflects(m, settings, r.reflectionDepth) ? m.reflectionAmount : 0.0f;
+        const float a = kReflection && materialReflects(m, settings, r.reflectionDepth) ? m.reflectionAmount : 0.0f;
         const float directWeight = (1.0f - a) * m.opacity;  // 0 for pure mirrors and clear glass: no shadow rays
-        const Vec3 direct = directWeight > 0.0f ? directLight(scene, sp, m, strata, rng, rays) : Vec3(0.0f);
+        const Vec3 direct = directWeight > 0.0f ? directLight<F>(scene, sp, m, strata, rng, rays) : Vec3(0.0f);
         color += r.weight * (direct * directWeight + m.emissive);
 
-        if (a > 0.0f) {
+        if (kReflection && a > 0.0f) {
             const Vec3 dir = sampleReflection(sp, d, m, settings.reflectionQuality, strata, rng);
             if (dot(dir, sp.ng) > 0.0f) {  // directions below the geometric surface contribute 0
                 push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, r.weight * m.specular * (a * m.opacity),
                                 r.reflectionDepth + 1, 0u, hashCombine(r.node, 1)});
             }
         }
-        if (m.opacity < 1.0f && r.segments < kMaxTransmissionSegments) {
+        if (kRefraction && m.opacity < 1.0f && r.segments < kMaxTransmissionSegments) {
             // Entering: η = 1/n; total internal reflection is possible only when n < 1.
             Vec3 dir;
             if (!refractDirection(d, sp.n, 1.0f / m.refractionIndex, dir)) dir = reflectDirection(d, sp.n);

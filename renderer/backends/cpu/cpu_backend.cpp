@@ -5,13 +5,43 @@
 #include <thread>
 
 #include "backends/backend.h"
-#include "integrator/render_sample.h"
+#include "integrator/sample_variants.h"
 
 namespace trazo {
 
 namespace {
 
 constexpr uint32_t kTileSize = 16;
+
+struct Tile {
+    uint32_t x0, y0, x1, y1;
+};
+
+// Passes inside the tile keep its data in cache; per pixel they still add in pass order. Returns rays.
+template <FeatureMask F>
+uint64_t renderTilePasses(const SceneView& scene, const FrameParams& frame, Tile tile, uint32_t firstPass,
+                          uint32_t passCount, AccumPixel* accum) {
+    uint64_t rays = 0;
+    for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
+        for (uint32_t y = tile.y0; y < tile.y1; ++y) {
+            for (uint32_t x = tile.x0; x < tile.x1; ++x) {
+                uint32_t sampleRays = 0;
+                const Vec3 c = renderSample<F>(scene, frame, x, y, pass, sampleRays);
+                AccumPixel& a = accum[(size_t)y * frame.camera.width + x];
+                a.sum += c;
+                a.count += 1.0f;
+                rays += sampleRays;
+            }
+        }
+    }
+    return rays;
+}
+
+template <FeatureMask F>
+struct TileVariant {
+    static constexpr auto value = &renderTilePasses<F>;
+};
+constexpr auto kTileVariants = makeVariantTable<TileVariant>();
 
 class CpuBackend final : public Backend {
 public:
@@ -42,24 +72,13 @@ public:
         const uint32_t tileCount = tilesX * tilesY;
         std::atomic<uint32_t> nextTile{0};
         std::atomic<uint64_t> rays{0};
+        const auto renderTile = kTileVariants[sampleVariantFor(view_.features)];
         auto worker = [&] {
             uint64_t localRays = 0;
             for (uint32_t tile; (tile = nextTile.fetch_add(1)) < tileCount;) {
                 const uint32_t x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
-                const uint32_t x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
-                // Passes inside the tile keep its data in cache; per pixel they still add in pass order.
-                for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
-                    for (uint32_t y = y0; y < y1; ++y) {
-                        for (uint32_t x = x0; x < x1; ++x) {
-                            uint32_t sampleRays = 0;
-                            const Vec3 c = renderSample(view_, frame, x, y, pass, sampleRays);
-                            AccumPixel& a = accum_[(size_t)y * width_ + x];
-                            a.sum += c;
-                            a.count += 1.0f;
-                            localRays += sampleRays;
-                        }
-                    }
-                }
+                const Tile t{x0, y0, std::min(x0 + kTileSize, width_), std::min(y0 + kTileSize, height_)};
+                localRays += renderTile(view_, frame, t, firstPass, passCount, accum_.data());
             }
             rays += localRays;
         };

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "backends/backend.h"
-#include "integrator/render_sample.h"
+#include "integrator/sample_variants.h"
 
 namespace trazo {
 
@@ -20,13 +20,14 @@ namespace {
                                      #call + ": " + cudaGetErrorString(status_));                      \
     } while (0)
 
+template <FeatureMask F>
 __global__ void renderPassKernel(SceneView scene, FrameParams frame, uint32_t pass, AccumPixel* accum,
                                  unsigned long long* rayCounter) {
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
     uint32_t rays = 0;
     if (x < frame.camera.width && y < frame.camera.height) {
-        const Vec3 c = renderSample(scene, frame, x, y, pass, rays);
+        const Vec3 c = renderSample<F>(scene, frame, x, y, pass, rays);
         AccumPixel& a = accum[(size_t)y * frame.camera.width + x];
         a.sum += c;
         a.count += 1.0f;
@@ -35,6 +36,19 @@ __global__ void renderPassKernel(SceneView scene, FrameParams frame, uint32_t pa
     for (int offset = 16; offset > 0; offset /= 2) rays += __shfl_down_sync(0xffffffffu, rays, offset);
     if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0 && rays) atomicAdd(rayCounter, (unsigned long long)rays);
 }
+
+// Host-side launchers, one per specialised variant, in the table both backends share.
+template <FeatureMask F>
+void launchRenderPass(dim3 grid, dim3 block, const SceneView& scene, const FrameParams& frame, uint32_t pass,
+                      AccumPixel* accum, unsigned long long* rayCounter) {
+    renderPassKernel<F><<<grid, block>>>(scene, frame, pass, accum, rayCounter);
+}
+
+template <FeatureMask F>
+struct LaunchVariant {
+    static constexpr auto value = &launchRenderPass<F>;
+};
+const auto kLaunchVariants = makeVariantTable<LaunchVariant>();
 
 template <typename T>
 class DeviceArray {
@@ -104,8 +118,9 @@ public:
     void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override {
         const dim3 block(16, 16);
         const dim3 grid((width_ + block.x - 1) / block.x, (height_ + block.y - 1) / block.y);
+        const auto launch = kLaunchVariants[sampleVariantFor(view_.features)];
         for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
-            renderPassKernel<<<grid, block>>>(view_, frame, pass, accum_, rayCounter_);
+            launch(grid, block, view_, frame, pass, accum_, rayCounter_);
             TRAZO_CUDA_CHECK(cudaGetLastError());
         }
         TRAZO_CUDA_CHECK(cudaDeviceSynchronize());

@@ -1,0 +1,49 @@
+// The specialised instances of renderSample<F> give exactly the image of the all-features oracle.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "device/flatten.h"
+#include "integrator/sample_variants.h"
+#include "render_harness.h"
+#include "scene/scene_reader.h"
+#include "test_paths.h"
+
+namespace trazo::test {
+namespace {
+
+TEST(FeatureVariants, EveryShippedSceneMatchesTheAllFeaturesOracleBitForBit) {
+    int scenes = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(sourcePath("scenes"))) {
+        if (entry.path().extension() != ".scene") continue;
+        ++scenes;
+        const RenderRequest request{.passes = 3, .seed = 7, .width = 40, .height = 40};
+        RenderRequest oracle = request;
+        oracle.allFeatures = true;
+        const RenderedImage specialised = renderSceneFile(entry.path().string(), request);
+        const RenderedImage reference = renderSceneFile(entry.path().string(), oracle);
+        ASSERT_EQ(specialised.pixels.size(), reference.pixels.size()) << entry.path();
+        for (size_t i = 0; i < specialised.pixels.size(); ++i) {
+            ASSERT_EQ(specialised.pixels[i].x, reference.pixels[i].x) << entry.path() << " pixel " << i;
+            ASSERT_EQ(specialised.pixels[i].y, reference.pixels[i].y) << entry.path() << " pixel " << i;
+            ASSERT_EQ(specialised.pixels[i].z, reference.pixels[i].z) << entry.path() << " pixel " << i;
+        }
+        EXPECT_EQ(specialised.rays, reference.rays) << entry.path();
+    }
+    EXPECT_GE(scenes, 19);
+}
+
+TEST(FeatureVariants, SceneFeaturesPickTheMatchingInstance) {
+    auto variantOf = [](const char* name) {
+        Diagnostics diags;
+        const Scene scene = readSceneFile(sourcePath(std::string("scenes/") + name), diags);
+        return sampleVariantFor(flatten(scene).arrays.features);
+    };
+    EXPECT_EQ(variantFeatures(variantOf("scene1_point.scene")), 0u);
+    EXPECT_EQ(variantFeatures(variantOf("scene1_area.scene")), kFeatureAreaLights);
+    EXPECT_EQ(variantFeatures(variantOf("scene4_reflect.scene")), kFeatureAreaLights | kFeatureReflection);
+    EXPECT_EQ(variantFeatures(variantOf("scene7_refract.scene")), kFeatureAreaLights | kFeatureRefraction);
+}
+
+}  // namespace
+}  // namespace trazo::test
