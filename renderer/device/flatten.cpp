@@ -1,6 +1,8 @@
 // Flattening of the host scene into the arrays kernels read, and the scene's feature mask.
 #include "device/flatten.h"
 
+#include "device/flatten_csg.h"
+
 #include <cmath>
 #include <numeric>
 
@@ -93,6 +95,11 @@ FlattenResult flatten(const Scene& scene) {
         out.objects.push_back({ObjectKind::Cylinder, (uint32_t)out.cylinders.size(), materials.index(c.material)});
         out.cylinders.push_back({c.base, normalize(c.axis), c.height, c.radius});
     }
+    for (const Csg& csg : scene.csgs) {
+        if (!csg.tree) continue;
+        out.objects.push_back({ObjectKind::Csg, (uint32_t)out.csgs.size(), materials.index(csg.material)});
+        out.csgs.push_back(flattenCsg(csg, out.csgNodes));
+    }
     if (!materials.defaultUsed) materials.data.pop_back();
     out.materials = std::move(materials.data);
 
@@ -119,8 +126,6 @@ FlattenResult flatten(const Scene& scene) {
     // Parsed and kept in the host scene, rendered by later issues; everything else still renders.
     if (!scene.meshes.empty())
         result.unsupported.push_back(std::to_string(scene.meshes.size()) + " Mesh object(s) are not rendered yet");
-    if (!scene.csgs.empty())
-        result.unsupported.push_back(std::to_string(scene.csgs.size()) + " CSG object(s) are not rendered yet");
     if (f & kFeatureTextures)
         result.unsupported.push_back("material textures are ignored (only their colours are used) for now");
     if (f & kFeatureIndirect)

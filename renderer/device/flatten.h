@@ -11,7 +11,7 @@ namespace trazo {
 
 struct FlattenResult {
     SceneArrays arrays;
-    // One line per scene feature this build cannot render yet (meshes, CSG, textures, indirect light);
+    // One line per scene feature this build cannot render yet (meshes, textures, indirect light);
     // the rest of the scene renders.
     std::vector<std::string> unsupported;
 };

@@ -8,6 +8,7 @@
 
 #include "core/vec3.h"
 #include "device/feature_mask.h"
+#include "geometry/csg.h"
 #include "geometry/shapes.h"
 
 namespace trazo {
@@ -24,7 +25,7 @@ struct MaterialData {
     int32_t diffuseTexture, specularTexture, emissiveTexture, normalTexture;  // -1 = none (issue 3)
 };
 
-enum class ObjectKind : uint32_t { Sphere = 0, Box = 1, Cylinder = 2 };
+enum class ObjectKind : uint32_t { Sphere = 0, Box = 1, Cylinder = 2, Csg = 3 };
 
 // One renderable object: which shape array, which element, which material.
 struct ObjectRef {
@@ -59,6 +60,8 @@ struct SceneArrays {
     std::vector<SphereShape> spheres;
     std::vector<BoxShape> boxes;
     std::vector<CylinderShape> cylinders;
+    std::vector<CsgShape> csgs;
+    std::vector<CsgNodeData> csgNodes;
     std::vector<ObjectRef> objects;
     std::vector<MaterialData> materials;
     std::vector<PointLightData> pointLights;
@@ -78,6 +81,8 @@ struct SceneView {
     ArrayView<SphereShape> spheres;
     ArrayView<BoxShape> boxes;
     ArrayView<CylinderShape> cylinders;
+    ArrayView<CsgShape> csgs;
+    ArrayView<CsgNodeData> csgNodes;
     ArrayView<ObjectRef> objects;
     ArrayView<MaterialData> materials;
     ArrayView<PointLightData> pointLights;
@@ -92,7 +97,8 @@ inline SceneView hostView(const SceneArrays& a) {
         using T = typename std::decay_t<decltype(v)>::value_type;
         return ArrayView<T>{v.data(), (uint32_t)v.size()};
     };
-    return SceneView{view(a.spheres), view(a.boxes), view(a.cylinders), view(a.objects), view(a.materials),
+    return SceneView{view(a.spheres), view(a.boxes), view(a.cylinders), view(a.csgs), view(a.csgNodes),
+                     view(a.objects), view(a.materials),
                      view(a.pointLights), view(a.areaLights), a.settings, a.features};
 }
 

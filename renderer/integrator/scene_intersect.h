@@ -3,6 +3,7 @@
 #pragma once
 
 #include "device/scene_arrays.h"
+#include "geometry/csg.h"
 #include "geometry/intersect_box.h"
 #include "geometry/intersect_cylinder.h"
 #include "geometry/intersect_rectangle.h"
@@ -24,6 +25,7 @@ TRAZO_HD bool intersectObject(const SceneView& scene, const ObjectRef& o, const 
         case ObjectKind::Sphere: return intersectSphere(scene.spheres[o.index], ray, 0.0f, tMax, hit);
         case ObjectKind::Box: return intersectBox(scene.boxes[o.index], ray, 0.0f, tMax, hit);
         case ObjectKind::Cylinder: return intersectCylinder(scene.cylinders[o.index], ray, 0.0f, tMax, hit);
+        case ObjectKind::Csg: return intersectCsg(scene.csgs[o.index], scene.csgNodes.data, ray, 0.0f, tMax, hit);
     }
     return false;
 }

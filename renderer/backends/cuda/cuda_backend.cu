@@ -96,12 +96,15 @@ public:
         spheres_.assign(a.spheres);
         boxes_.assign(a.boxes);
         cylinders_.assign(a.cylinders);
+        csgs_.assign(a.csgs);
+        csgNodes_.assign(a.csgNodes);
         objects_.assign(a.objects);
         materials_.assign(a.materials);
         pointLights_.assign(a.pointLights);
         areaLights_.assign(a.areaLights);
-        view_ = SceneView{spheres_.view(),   boxes_.view(),       cylinders_.view(), objects_.view(),
-                          materials_.view(), pointLights_.view(), areaLights_.view(), a.settings, a.features};
+        view_ = SceneView{spheres_.view(),   boxes_.view(),     cylinders_.view(),   csgs_.view(),
+                          csgNodes_.view(),  objects_.view(),   materials_.view(),   pointLights_.view(),
+                          areaLights_.view(), a.settings,       a.features};
     }
     void resize(uint32_t width, uint32_t height) override {
         cudaFree(accum_);
@@ -142,6 +145,8 @@ private:
     DeviceArray<SphereShape> spheres_;
     DeviceArray<BoxShape> boxes_;
     DeviceArray<CylinderShape> cylinders_;
+    DeviceArray<CsgShape> csgs_;
+    DeviceArray<CsgNodeData> csgNodes_;
     DeviceArray<ObjectRef> objects_;
     DeviceArray<MaterialData> materials_;
     DeviceArray<PointLightData> pointLights_;

@@ -1,0 +1,187 @@
+// Ray–CSG intersection (host and device) without allocation: the tree, flattened in post-order, is
+// evaluated by one sweep that keeps each sub-tree's sorted list of [entry, exit] intervals along the ray in
+// a fixed pool. Memory is bounded by the tree size: a list never holds more intervals than its sub-tree
+// has leaves, so kCsgMaxLeaves intervals plus as many for the combine step suffice.
+#pragma once
+
+#include <cstdint>
+
+#include "core/affine.h"
+#include "core/ray.h"
+#include "geometry/intersect_box.h"
+#include "geometry/intersect_cylinder.h"
+#include "geometry/intersect_sphere.h"
+
+namespace trazo {
+
+// The readers reject trees over 64 nodes; a binary tree of at most 63 nodes has at most 32 leaves.
+constexpr int kCsgMaxLeaves = 32;
+
+enum class CsgOp : uint32_t { Leaf = 0, Union = 1, Intersection = 2, Difference = 3 };
+// Leaves are canonical shapes in their object space: the unit sphere, the unit cube [-0.5, 0.5]³ and the
+// cylinder of radius 1 from y = 0 to y = 1; objectFromWorld carries every transform of the tree.
+enum class CsgLeafShape : uint32_t { Sphere = 0, Box = 1, Cylinder = 2 };
+
+struct CsgNodeData {
+    CsgOp op;
+    CsgLeafShape shape;      // leaves only
+    Affine3 objectFromWorld;  // leaves only
+};
+
+// One CSG object: its nodes are csgNodes[firstNode, firstNode + nodeCount) in post-order (root last).
+struct CsgShape {
+    uint32_t firstNode, nodeCount;
+    Vec3 boundsMin, boundsMax;  // world bounds of all leaves: rays that miss them skip the sweep
+};
+
+struct CsgEndpoint {
+    float t;
+    uint16_t leaf;     // node index (within the object) whose surface this is
+    uint16_t flipped;  // 1 when the surface bounds a subtracted part: its outward normal is reversed
+};
+
+struct CsgInterval {
+    CsgEndpoint entry, exit;
+};
+
+// The canonical shape's interval along an object-space ray: false when the line misses it.
+TRAZO_HD bool csgLeafInterval(CsgLeafShape shape, const Ray& rayObject, float& t0, float& t1) {
+    ShapeHit first, second;
+    auto intersect = [&](float tMin, ShapeHit& hit) {
+        switch (shape) {
+            case CsgLeafShape::Sphere: return intersectSphere(SphereShape{Vec3(0.0f), 1.0f}, rayObject, tMin, INFINITY, hit);
+            case CsgLeafShape::Box: return intersectBox(BoxShape{}, rayObject, tMin, INFINITY, hit);
+            case CsgLeafShape::Cylinder:
+                return intersectCylinder(CylinderShape{Vec3(0.0f), Vec3(0, 1, 0), 1.0f, 1.0f}, rayObject, tMin, INFINITY, hit);
+        }
+        return false;
+    };
+    if (!intersect(-INFINITY, first) || !intersect(first.t, second)) return false;
+    t0 = first.t;
+    t1 = second.t;
+    return true;
+}
+
+// Outward normal of a canonical shape at an object-space point on (or very near) its surface.
+TRAZO_HD Vec3 csgLeafNormal(CsgLeafShape shape, Vec3 p) {
+    switch (shape) {
+        case CsgLeafShape::Sphere: return p;
+        case CsgLeafShape::Box: {
+            const Vec3 a = abs(p);
+            if (a.x >= a.y && a.x >= a.z) return Vec3(copysignf(1.0f, p.x), 0, 0);
+            if (a.y >= a.z) return Vec3(0, copysignf(1.0f, p.y), 0);
+            return Vec3(0, 0, copysignf(1.0f, p.z));
+        }
+        case CsgLeafShape::Cylinder: {
+            const float radial = sqrtf(p.x * p.x + p.z * p.z);
+            const float side = fabsf(radial - 1.0f), bottom = fabsf(p.y), top = fabsf(p.y - 1.0f);
+            if (side <= bottom && side <= top) return Vec3(p.x, 0, p.z);
+            return Vec3(0, bottom < top ? -1.0f : 1.0f, 0);
+        }
+    }
+    return Vec3(0, 1, 0);
+}
+
+TRAZO_HD bool csgInside(CsgOp op, bool inLeft, bool inRight) {
+    switch (op) {
+        case CsgOp::Union: return inLeft || inRight;
+        case CsgOp::Intersection: return inLeft && inRight;
+        default: return inLeft && !inRight;  // Difference: left minus right
+    }
+}
+
+// Merges two sorted interval lists by a boolean operation into `out` (sorted, disjoint); returns its size.
+// Endpoints of the right operand of a difference bound the result from the other side: flip them.
+TRAZO_HD int csgCombine(CsgOp op, const CsgInterval* left, int leftCount, const CsgInterval* right, int rightCount,
+                        CsgInterval* out) {
+    int n = 0;
+    bool inLeft = false, inRight = false, inside = false;
+    // Each list contributes its endpoints in order: entry_k, exit_k, entry_k+1, …
+    int li = 0, ri = 0;  // endpoint cursors (2 per interval)
+    while (li < 2 * leftCount || ri < 2 * rightCount) {
+        const float tl = li < 2 * leftCount ? (li % 2 ? left[li / 2].exit.t : left[li / 2].entry.t) : INFINITY;
+        const float tr = ri < 2 * rightCount ? (ri % 2 ? right[ri / 2].exit.t : right[ri / 2].entry.t) : INFINITY;
+        CsgEndpoint e;
+        if (tl <= tr) {
+            e = li % 2 ? left[li / 2].exit : left[li / 2].entry;
+            inLeft = !(li % 2);
+            ++li;
+        } else {
+            e = ri % 2 ? right[ri / 2].exit : right[ri / 2].entry;
+            if (op == CsgOp::Difference) e.flipped ^= 1;
+            inRight = !(ri % 2);
+            ++ri;
+        }
+        const bool now = csgInside(op, inLeft, inRight);
+        if (now == inside) continue;
+        if (now) out[n].entry = e;
+        else out[n++].exit = e;
+        inside = now;
+    }
+    return n;
+}
+
+TRAZO_HD bool slabHit(Vec3 boundsMin, Vec3 boundsMax, const Ray& ray, float tMax) {
+    float t0 = 0.0f, t1 = tMax;
+    for (int a = 0; a < 3; ++a) {
+        const float inv = 1.0f / ray.direction[a];
+        float tNear = (boundsMin[a] - ray.origin[a]) * inv, tFar = (boundsMax[a] - ray.origin[a]) * inv;
+        if (tNear > tFar) {
+            const float s = tNear;
+            tNear = tFar;
+            tFar = s;
+        }
+        // NaN (a zero direction component on a slab boundary) keeps the ray: the test must stay conservative.
+        t0 = tNear > t0 ? tNear : t0;
+        t1 = tFar < t1 ? tFar : t1;
+    }
+    return !(t0 > t1 * (1.0f + 1e-5f) + 1e-30f);
+}
+
+// Nearest surface of the solid with tMin < t < tMax and its outward normal (world space).
+TRAZO_HD bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, const Ray& ray, float tMin, float tMax,
+                           ShapeHit& hit) {
+    if (!slabHit(csg.boundsMin, csg.boundsMax, ray, tMax)) return false;
+    CsgInterval pool[2 * kCsgMaxLeaves];
+    int listStart[kCsgMaxLeaves + 1], listCount[kCsgMaxLeaves + 1];
+    int lists = 0, used = 0;
+    for (uint32_t k = 0; k < csg.nodeCount; ++k) {
+        const CsgNodeData& node = nodes[csg.firstNode + k];
+        if (node.op == CsgOp::Leaf) {
+            const Ray rayObject{node.objectFromWorld.applyToPoint(ray.origin), node.objectFromWorld.applyToVector(ray.direction)};
+            float t0, t1;
+            listStart[lists] = used;
+            listCount[lists] = 0;
+            if (csgLeafInterval(node.shape, rayObject, t0, t1)) {
+                pool[used++] = CsgInterval{{t0, (uint16_t)k, 0}, {t1, (uint16_t)k, 0}};
+                listCount[lists] = 1;
+            }
+            ++lists;
+            continue;
+        }
+        // Operands are the two lists on top, contiguous in the pool; the result replaces them.
+        const int right = --lists, left = lists - 1;
+        CsgInterval* scratch = pool + used;
+        const int n = csgCombine(node.op, pool + listStart[left], listCount[left], pool + listStart[right],
+                                 listCount[right], scratch);
+        for (int i = 0; i < n; ++i) pool[listStart[left] + i] = scratch[i];
+        listCount[left] = n;
+        used = listStart[left] + n;
+    }
+    // The root's list: the first endpoint inside the window, entry or (from inside) exit.
+    for (int i = 0; i < listCount[0]; ++i) {
+        for (int side = 0; side < 2; ++side) {
+            const CsgEndpoint& e = side == 0 ? pool[i].entry : pool[i].exit;
+            if (!(e.t > tMin && e.t < tMax)) continue;
+            const CsgNodeData& leaf = nodes[csg.firstNode + e.leaf];
+            const Vec3 pObject = leaf.objectFromWorld.applyToPoint(pointAt(ray, e.t));
+            Vec3 n = normalize(leaf.objectFromWorld.applyTransposeToVector(csgLeafNormal(leaf.shape, pObject)));
+            hit.t = e.t;
+            hit.normal = e.flipped ? -n : n;
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace trazo
