@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <string>
 
 #include "render_harness.h"
+#include "test_paths.h"
 
 namespace trazo::test {
 namespace {
@@ -176,6 +178,30 @@ TEST(RenderClosedForm, OpacityBlendsWithTransmission) {
         plateScene("DiffuseColor 0.8 0.8 0.8\nSpecularColor 0 0 0\nRoughness 0\nOpacity 0.25\n"), {});
     EXPECT_NEAR(image.at(0, 0).x, 0.25 * 0.5 * 0.8 + 0.75 * 0.2, 1e-5);
     EXPECT_NEAR(image.at(0, 0).z, 0.25 * 0.5 * 0.8 + 0.75 * 0.6, 1e-5);
+}
+
+// A glass solid made by CSG refracts like glass: a sphere intersected with a box that contains it is
+// the sphere, so both scenes must render the same image (refraction in, out and total internal reflection).
+TEST(RenderRefraction, GlassCsgSolidRefractsLikeThePlainSolid) {
+    std::ofstream(tempPath("lens.csg")) << "Sphere\n{\n    Center 0.2 0.1 0\n    Radius 1.5\n}\n"
+                                           "Box\n{\n    Scale 5 5 5\n}\n"
+                                           "Intersection\n{\n    LeftType Sphere\n    LeftIndex 0\n"
+                                           "    RightType Box\n    RightIndex 0\n}\n";
+    const std::string common =
+        "SceneSettings\n{\nRenderWidth 32\nRenderHeight 32\nReflectionQuality 0\nIndirectQuality 0\n}\n"
+        "Camera\n{\nPOV 0 0 10\nPOI 0 0 0\nFOV 25\n}\n"
+        "Material\n{\nName wall\nDiffuseColor 1 1 1\nSpecularColor 0 0 0\nRoughness 0\n}\n"
+        "Material\n{\nName glass\nDiffuseColor 1 1 1\nSpecularColor 0 0 0\nOpacity 0\nRefractionIndex 1.5\n}\n"
+        "Box\n{\nMaterial wall\nScale 100 100 1\nTranslation 0 0 -5.5\n}\n"
+        "PointLight\n{\nPosition 0.3 0.2 -2.5\nColor 1 1 1\n}\n";
+    const RenderedImage plain =
+        renderSceneText(common + "Sphere\n{\nMaterial glass\nCenter 0.2 0.1 0\nRadius 1.5\n}\n", {});
+    const RenderedImage csg = renderSceneText(common + "CSG\n{\nMaterial glass\nSource \"lens.csg\"\n}\n", {});
+    ASSERT_EQ(plain.pixels.size(), csg.pixels.size());
+    EXPECT_LT(rmse(plain, csg), 1e-4);
+    double sum = 0;
+    for (const Vec3& p : csg.pixels) sum += p.x;
+    EXPECT_GT(sum / csg.pixels.size(), 0.05);  // the wall is seen through the glass
 }
 
 std::string areaLightScene(int passesHint, int width) {
