@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "geometry/csg.h"
+
 namespace trazo {
 
 namespace {
@@ -25,13 +27,38 @@ Affine3 primitiveFromCanonical(const CsgNode& node) {
     }
 }
 
+struct Bounds {
+    Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+};
+
+// Pads by a relative margin so rounding in the slab test never culls a grazing ray.
+Bounds padded(Bounds b) {
+    if (!(b.lo.x <= b.hi.x && b.lo.y <= b.hi.y && b.lo.z <= b.hi.z)) return Bounds{};  // empty stays empty
+    const Vec3 pad = (b.hi - b.lo) * 1e-4f + abs(b.hi) * 1e-6f + abs(b.lo) * 1e-6f;
+    return Bounds{b.lo - pad, b.hi + pad};
+}
+
+Bounds leafBounds(CsgLeafShape shape, const Affine3& worldFromObject) {
+    const Vec3 lo = shape == CsgLeafShape::Sphere ? Vec3(-1, -1, -1)
+                    : shape == CsgLeafShape::Box  ? Vec3(-0.5f, -0.5f, -0.5f)
+                                                  : Vec3(-1, 0, -1);
+    const Vec3 hi = shape == CsgLeafShape::Box ? Vec3(0.5f, 0.5f, 0.5f) : Vec3(1, 1, 1);
+    Bounds b;
+    for (int c = 0; c < 8; ++c) {
+        const Vec3 p = worldFromObject.applyToPoint(Vec3((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z));
+        b.lo = min(b.lo, p);
+        b.hi = max(b.hi, p);
+    }
+    return padded(b);
+}
+
 struct Flattener {
     const CsgTree& tree;
     std::vector<CsgNodeData>& nodes;
     uint32_t first;
-    Vec3 boundsMin{INFINITY, INFINITY, INFINITY}, boundsMax{-INFINITY, -INFINITY, -INFINITY};
 
-    void visit(int32_t index, const Affine3& worldFromParent) {
+    // Appends the sub-tree in post-order; returns its root's index within the object.
+    uint32_t visit(int32_t index, const Affine3& worldFromParent) {
         const CsgNode& node = tree.nodes[size_t(index)];
         const Affine3 worldFromNode = then(composeTransforms(node.transforms), worldFromParent);
         CsgNodeData data{};
@@ -41,32 +68,37 @@ struct Flattener {
             case CsgNode::Kind::Difference: data.op = CsgOp::Difference; break;
             default: data.op = CsgOp::Leaf;
         }
+        Bounds b;
+        uint32_t left = 0, right = 0;
         if (data.op != CsgOp::Leaf) {
-            visit(node.left, worldFromNode);
-            visit(node.right, worldFromNode);
+            left = visit(node.left, worldFromNode);
+            right = visit(node.right, worldFromNode);
+            const CsgNodeData& l = at(left);
+            const CsgNodeData& r = at(right);
+            if (data.op == CsgOp::Union) b = {min(l.boundsMin, r.boundsMin), max(l.boundsMax, r.boundsMax)};
+            else if (data.op == CsgOp::Intersection) b = padded({max(l.boundsMin, r.boundsMin), min(l.boundsMax, r.boundsMax)});
+            else b = {l.boundsMin, l.boundsMax};
         } else {
             data.shape = node.kind == CsgNode::Kind::Sphere ? CsgLeafShape::Sphere
                          : node.kind == CsgNode::Kind::Box  ? CsgLeafShape::Box
                                                             : CsgLeafShape::Cylinder;
             const Affine3 worldFromObject = then(primitiveFromCanonical(node), worldFromNode);
             data.objectFromWorld = inverse(worldFromObject);
-            includeBounds(data.shape, worldFromObject);
+            b = leafBounds(data.shape, worldFromObject);
         }
+        data.boundsMin = b.lo;
+        data.boundsMax = b.hi;
+        const uint32_t self = (uint32_t)nodes.size() - first;
+        data.parent = self;  // until the parent is appended
         nodes.push_back(data);
+        if (data.op != CsgOp::Leaf) {
+            at(left).parent = at(right).parent = self;
+            at(left).isLeftChild = 1;
+        }
+        return self;
     }
 
-    void includeBounds(CsgLeafShape shape, const Affine3& worldFromObject) {
-        const Vec3 lo = shape == CsgLeafShape::Sphere ? Vec3(-1, -1, -1)
-                        : shape == CsgLeafShape::Box  ? Vec3(-0.5f, -0.5f, -0.5f)
-                                                      : Vec3(-1, 0, -1);
-        const Vec3 hi = shape == CsgLeafShape::Box ? Vec3(0.5f, 0.5f, 0.5f) : Vec3(1, 1, 1);
-        for (int c = 0; c < 8; ++c) {
-            const Vec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-            const Vec3 p = worldFromObject.applyToPoint(corner);
-            boundsMin = min(boundsMin, p);
-            boundsMax = max(boundsMax, p);
-        }
-    }
+    CsgNodeData& at(uint32_t local) { return nodes[first + local]; }
 };
 
 }  // namespace
@@ -74,9 +106,7 @@ struct Flattener {
 CsgShape flattenCsg(const Csg& csg, std::vector<CsgNodeData>& nodes) {
     Flattener f{*csg.tree, nodes, (uint32_t)nodes.size()};
     f.visit(csg.tree->root, composeTransforms(csg.transforms));
-    // Pad by a relative margin so rounding in the slab test never culls a grazing ray.
-    const Vec3 pad = (f.boundsMax - f.boundsMin) * 1e-4f + abs(f.boundsMax) * 1e-6f + abs(f.boundsMin) * 1e-6f;
-    return CsgShape{f.first, (uint32_t)nodes.size() - f.first, f.boundsMin - pad, f.boundsMax + pad};
+    return CsgShape{f.first, (uint32_t)nodes.size() - f.first};
 }
 
 }  // namespace trazo

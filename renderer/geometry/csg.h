@@ -26,12 +26,16 @@ struct CsgNodeData {
     CsgOp op;
     CsgLeafShape shape;      // leaves only
     Affine3 objectFromWorld;  // leaves only
+    // World bounds of the sub-tree's result (a union of its leaves, the left operand for a difference,
+    // the overlap for an intersection), and the tree links that let the sweep skip a missed sub-tree.
+    Vec3 boundsMin, boundsMax;
+    uint32_t parent;       // node index within the object; the root points at itself
+    uint32_t isLeftChild;  // 1 when this node is its parent's left operand
 };
 
 // One CSG object: its nodes are csgNodes[firstNode, firstNode + nodeCount) in post-order (root last).
 struct CsgShape {
     uint32_t firstNode, nodeCount;
-    Vec3 boundsMin, boundsMax;  // world bounds of all leaves: rays that miss them skip the sweep
 };
 
 struct CsgEndpoint {
@@ -141,17 +145,38 @@ TRAZO_HD bool slabHit(Vec3 boundsMin, Vec3 boundsMax, const Ray& ray, float tMax
 // Nearest surface of the solid with tMin < t < tMax and its outward normal (world space).
 TRAZO_HD bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, const Ray& ray, float tMin, float tMax,
                            ShapeHit& hit) {
-    if (!slabHit(csg.boundsMin, csg.boundsMax, ray, tMax)) return false;
     CsgInterval pool[2 * kCsgMaxLeaves];
     int listStart[kCsgMaxLeaves + 1], listCount[kCsgMaxLeaves + 1];
     int lists = 0, used = 0;
     for (uint32_t k = 0; k < csg.nodeCount; ++k) {
         const CsgNodeData& node = nodes[csg.firstNode + k];
         if (node.op == CsgOp::Leaf) {
-            const Ray rayObject{node.objectFromWorld.applyToPoint(ray.origin), node.objectFromWorld.applyToVector(ray.direction)};
-            float t0, t1;
+            // A leaf starts the sub-trees of the ancestors it is the leftmost leaf of. The outermost one
+            // whose bounds the ray misses yields an empty list and is skipped whole.
+            uint32_t chain[kCsgMaxLeaves + 1];
+            int chainLength = 0;
+            for (uint32_t n = k;; n = nodes[csg.firstNode + n].parent) {
+                chain[chainLength++] = n;
+                const CsgNodeData& c = nodes[csg.firstNode + n];
+                if (c.parent == n || !c.isLeftChild || chainLength > kCsgMaxLeaves) break;
+            }
+            uint32_t skippedRoot = 0xffffffffu;
+            for (int i = chainLength - 1; i >= 0; --i) {
+                const CsgNodeData& c = nodes[csg.firstNode + chain[i]];
+                if (!slabHit(c.boundsMin, c.boundsMax, ray, tMax)) {
+                    skippedRoot = chain[i];
+                    break;
+                }
+            }
             listStart[lists] = used;
             listCount[lists] = 0;
+            if (skippedRoot != 0xffffffffu) {
+                ++lists;
+                k = skippedRoot;  // the sub-tree ends at its root in post-order
+                continue;
+            }
+            const Ray rayObject{node.objectFromWorld.applyToPoint(ray.origin), node.objectFromWorld.applyToVector(ray.direction)};
+            float t0, t1;
             if (csgLeafInterval(node.shape, rayObject, t0, t1)) {
                 pool[used++] = CsgInterval{{t0, (uint16_t)k, 0}, {t1, (uint16_t)k, 0}};
                 listCount[lists] = 1;
