@@ -118,9 +118,15 @@ TRAZO_HD int csgCombine(CsgOp op, const CsgInterval* left, int leftCount, const 
         }
         const bool now = csgInside(op, inLeft, inRight);
         if (now == inside) continue;
-        if (now) out[n].entry = e;
-        else out[n++].exit = e;
         inside = now;
+        // Coplanar faces: an interval that starts where the previous one ended continues it (two boxes
+        // sharing a face are one solid), and an interval of zero length is no solid at all.
+        if (now) {
+            if (n > 0 && out[n - 1].exit.t >= e.t) --n;
+            else out[n].entry = e;
+        } else if (e.t > out[n].entry.t) {
+            out[n++].exit = e;
+        }
     }
     return n;
 }
