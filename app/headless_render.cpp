@@ -8,8 +8,8 @@
 #include "device/flatten.h"
 #include "image/image_writer.h"
 #include "progress_bar.h"
+#include "render/frame_setup.h"
 #include "render/progressive_render.h"
-#include "render/resolve.h"
 #include "render_stats.h"
 #include "scene/scene_reader.h"
 
@@ -76,9 +76,7 @@ int runHeadlessRender(const CommandLine& options) {
         backend->resize(stats.width, stats.height);
         stats.uploadSeconds = secondsSince(t0);
 
-        const FrameParams frame{makeCameraFrame(scene.camera.pov, scene.camera.poi, scene.camera.fovDegrees,
-                                                stats.width, stats.height),
-                                options.seed};
+        const FrameParams frame = makeFrameParams(scene, stats.width, stats.height, options.seed);
         RenderLimits limits;
         limits.seconds = options.seconds;
         limits.passes = options.spp ? *options.spp : (options.seconds > 0 ? (1u << 24) : stats.fullCycle);
@@ -90,10 +88,8 @@ int runHeadlessRender(const CommandLine& options) {
         stats.renderSeconds = outcome.seconds;
         stats.rays = outcome.rays;
 
-        std::vector<AccumPixel> accum;
-        backend->readAccumulation(accum);
         std::string error;
-        if (!writeImage(options.output, (int)stats.width, (int)stats.height, resolveImage(accum), error)) {
+        if (!writeImage(options.output, (int)stats.width, (int)stats.height, readImage(*backend), error)) {
             std::fprintf(stderr, "trazo: %s\n", error.c_str());
             return 1;
         }

@@ -14,8 +14,8 @@
 #include "backends/backend.h"
 #include "device/flatten.h"
 #include "integrator/sample_variants.h"
+#include "render/frame_setup.h"
 #include "render/progressive_render.h"
-#include "render/resolve.h"
 #include "scene/scene_reader.h"
 
 namespace {
@@ -41,16 +41,12 @@ double thesisSeconds(const std::string& path) {
 }
 
 std::vector<Vec3> render(Backend& b, const Scene& scene, uint32_t passes, uint32_t seed, RenderOutcome& outcome) {
-    const FrameParams frame{makeCameraFrame(scene.camera.pov, scene.camera.poi, scene.camera.fovDegrees,
-                                            scene.settings.renderWidth, scene.settings.renderHeight),
-                            seed};
+    const FrameParams frame = makeFrameParams(scene, scene.settings.renderWidth, scene.settings.renderHeight, seed);
     b.reset();
     RenderLimits limits;
     limits.passes = passes;
     outcome = renderProgressive(b, frame, limits);
-    std::vector<AccumPixel> accum;
-    b.readAccumulation(accum);
-    return resolveImage(accum);
+    return readImage(b);
 }
 
 }  // namespace

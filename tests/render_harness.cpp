@@ -7,8 +7,8 @@
 
 #include "device/flatten.h"
 #include "integrator/sample_variants.h"
+#include "render/frame_setup.h"
 #include "render/progressive_render.h"
-#include "render/resolve.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"
 
@@ -34,15 +34,11 @@ RenderedImage renderScene(const Scene& scene, const Diagnostics& diags, const Re
     image.height = request.height ? request.height : scene.settings.renderHeight;
     backend->upload(flat.arrays);
     backend->resize(image.width, image.height);
-    const FrameParams frame{makeCameraFrame(scene.camera.pov, scene.camera.poi, scene.camera.fovDegrees,
-                                            image.width, image.height),
-                            request.seed};
+    const FrameParams frame = makeFrameParams(scene, image.width, image.height, request.seed);
     RenderLimits limits;
     limits.passes = request.passes;
     image.rays = renderProgressive(*backend, frame, limits).rays;
-    std::vector<AccumPixel> accum;
-    backend->readAccumulation(accum);
-    image.pixels = resolveImage(accum);
+    image.pixels = readImage(*backend);
     return image;
 }
 
