@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstdint>
-#include <type_traits>
 #include <vector>
 
 #include "core/vec3.h"
@@ -55,17 +54,24 @@ struct RenderSettings {
     uint32_t antialiasing;  // 1, 4 or 16
 };
 
+// Every array of the flattened scene, once: SceneArrays, SceneView, hostView() and the backends' uploads
+// are all generated from this list, so adding an array is a one-line change. X(element type, member name).
+#define TRAZO_SCENE_ARRAYS(X)          \
+    X(SphereShape, spheres)            \
+    X(BoxShape, boxes)                 \
+    X(CylinderShape, cylinders)        \
+    X(CsgShape, csgs)                  \
+    X(CsgNodeData, csgNodes)           \
+    X(ObjectRef, objects)              \
+    X(MaterialData, materials)         \
+    X(PointLightData, pointLights)     \
+    X(AreaLightData, areaLights)
+
 // Owning host copy of the flattened scene; what Backend::upload takes.
 struct SceneArrays {
-    std::vector<SphereShape> spheres;
-    std::vector<BoxShape> boxes;
-    std::vector<CylinderShape> cylinders;
-    std::vector<CsgShape> csgs;
-    std::vector<CsgNodeData> csgNodes;
-    std::vector<ObjectRef> objects;
-    std::vector<MaterialData> materials;
-    std::vector<PointLightData> pointLights;
-    std::vector<AreaLightData> areaLights;
+#define TRAZO_X(T, name) std::vector<T> name;
+    TRAZO_SCENE_ARRAYS(TRAZO_X)
+#undef TRAZO_X
     RenderSettings settings{};
     FeatureMask features = 0;
 };
@@ -78,28 +84,27 @@ struct ArrayView {
 };
 
 struct SceneView {
-    ArrayView<SphereShape> spheres;
-    ArrayView<BoxShape> boxes;
-    ArrayView<CylinderShape> cylinders;
-    ArrayView<CsgShape> csgs;
-    ArrayView<CsgNodeData> csgNodes;
-    ArrayView<ObjectRef> objects;
-    ArrayView<MaterialData> materials;
-    ArrayView<PointLightData> pointLights;
-    ArrayView<AreaLightData> areaLights;
+#define TRAZO_X(T, name) ArrayView<T> name;
+    TRAZO_SCENE_ARRAYS(TRAZO_X)
+#undef TRAZO_X
     RenderSettings settings;
     FeatureMask features;
 };
 
+template <typename T>
+ArrayView<T> viewOf(const std::vector<T>& v) {
+    return ArrayView<T>{v.data(), (uint32_t)v.size()};
+}
+
 // A view of host-resident arrays (the CPU backend renders straight from them).
 inline SceneView hostView(const SceneArrays& a) {
-    auto view = [](const auto& v) {
-        using T = typename std::decay_t<decltype(v)>::value_type;
-        return ArrayView<T>{v.data(), (uint32_t)v.size()};
-    };
-    return SceneView{view(a.spheres), view(a.boxes), view(a.cylinders), view(a.csgs), view(a.csgNodes),
-                     view(a.objects), view(a.materials),
-                     view(a.pointLights), view(a.areaLights), a.settings, a.features};
+    SceneView view{};
+#define TRAZO_X(T, name) view.name = viewOf(a.name);
+    TRAZO_SCENE_ARRAYS(TRAZO_X)
+#undef TRAZO_X
+    view.settings = a.settings;
+    view.features = a.features;
+    return view;
 }
 
 }  // namespace trazo

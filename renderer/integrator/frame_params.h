@@ -16,6 +16,10 @@ struct FrameParams {
 struct AccumPixel {
     Vec3 sum;
     float count;
+    TRAZO_HD void add(Vec3 sample, uint32_t /*pass*/) {
+        sum += sample;
+        count += 1.0f;
+    }
 };
 
 }  // namespace trazo

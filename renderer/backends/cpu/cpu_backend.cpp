@@ -27,9 +27,7 @@ uint64_t renderTilePasses(const SceneView& scene, const FrameParams& frame, Tile
             for (uint32_t x = tile.x0; x < tile.x1; ++x) {
                 uint32_t sampleRays = 0;
                 const Vec3 c = renderSample<F>(scene, frame, x, y, pass, sampleRays);
-                AccumPixel& a = accum[(size_t)y * frame.camera.width + x];
-                a.sum += c;
-                a.count += 1.0f;
+                accum[(size_t)y * frame.camera.width + x].add(c, pass);
                 rays += sampleRays;
             }
         }
@@ -58,11 +56,11 @@ public:
     void resize(uint32_t width, uint32_t height) override {
         width_ = width;
         height_ = height;
-        accum_.assign((size_t)width * height, AccumPixel{Vec3(0.0f), 0.0f});
+        accum_.assign((size_t)width * height, AccumPixel{});
         rays_ = 0;
     }
     void reset() override {
-        std::fill(accum_.begin(), accum_.end(), AccumPixel{Vec3(0.0f), 0.0f});
+        std::fill(accum_.begin(), accum_.end(), AccumPixel{});
         rays_ = 0;
     }
 

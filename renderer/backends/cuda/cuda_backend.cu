@@ -2,6 +2,7 @@
 #include <cuda_runtime.h>
 
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include "backends/backend.h"
@@ -28,9 +29,7 @@ __global__ void renderPassKernel(SceneView scene, FrameParams frame, uint32_t pa
     uint32_t rays = 0;
     if (x < frame.camera.width && y < frame.camera.height) {
         const Vec3 c = renderSample<F>(scene, frame, x, y, pass, rays);
-        AccumPixel& a = accum[(size_t)y * frame.camera.width + x];
-        a.sum += c;
-        a.count += 1.0f;
+        accum[(size_t)y * frame.camera.width + x].add(c, pass);
     }
     // One atomic per warp for the ray count.
     for (int offset = 16; offset > 0; offset /= 2) rays += __shfl_down_sync(0xffffffffu, rays, offset);
@@ -58,7 +57,11 @@ public:
     DeviceArray& operator=(const DeviceArray&) = delete;
     ~DeviceArray() { cudaFree(data_); }
 
+    // Copies `host` to the device unless it equals what was copied last time.
     void assign(const std::vector<T>& host) {
+        if (host.size() == shadow_.size() &&
+            (host.empty() || std::memcmp(host.data(), shadow_.data(), host.size() * sizeof(T)) == 0))
+            return;
         if (host.size() > capacity_) {
             cudaFree(data_);
             data_ = nullptr;
@@ -67,12 +70,14 @@ public:
         }
         count_ = host.size();
         if (count_) TRAZO_CUDA_CHECK(cudaMemcpy(data_, host.data(), count_ * sizeof(T), cudaMemcpyHostToDevice));
+        shadow_ = host;
     }
     ArrayView<T> view() const { return ArrayView<T>{data_, (uint32_t)count_}; }
 
 private:
     T* data_ = nullptr;
     size_t count_ = 0, capacity_ = 0;
+    std::vector<T> shadow_;  // host copy of the device contents
 };
 
 class CudaBackend final : public Backend {
@@ -92,19 +97,16 @@ public:
     std::string name() const override { return "cuda"; }
     std::string deviceName() const override { return deviceName_; }
 
+    // Arrays equal to the ones already on the device are not copied again (an edited material re-sends
+    // the materials, not the meshes).
     void upload(const SceneArrays& a) override {
-        spheres_.assign(a.spheres);
-        boxes_.assign(a.boxes);
-        cylinders_.assign(a.cylinders);
-        csgs_.assign(a.csgs);
-        csgNodes_.assign(a.csgNodes);
-        objects_.assign(a.objects);
-        materials_.assign(a.materials);
-        pointLights_.assign(a.pointLights);
-        areaLights_.assign(a.areaLights);
-        view_ = SceneView{spheres_.view(),   boxes_.view(),     cylinders_.view(),   csgs_.view(),
-                          csgNodes_.view(),  objects_.view(),   materials_.view(),   pointLights_.view(),
-                          areaLights_.view(), a.settings,       a.features};
+#define TRAZO_X(T, name)        \
+    device_.name.assign(a.name); \
+    view_.name = device_.name.view();
+        TRAZO_SCENE_ARRAYS(TRAZO_X)
+#undef TRAZO_X
+        view_.settings = a.settings;
+        view_.features = a.features;
     }
     void resize(uint32_t width, uint32_t height) override {
         cudaFree(accum_);
@@ -142,15 +144,11 @@ private:
     size_t pixelCount() const { return (size_t)width_ * height_; }
 
     std::string deviceName_;
-    DeviceArray<SphereShape> spheres_;
-    DeviceArray<BoxShape> boxes_;
-    DeviceArray<CylinderShape> cylinders_;
-    DeviceArray<CsgShape> csgs_;
-    DeviceArray<CsgNodeData> csgNodes_;
-    DeviceArray<ObjectRef> objects_;
-    DeviceArray<MaterialData> materials_;
-    DeviceArray<PointLightData> pointLights_;
-    DeviceArray<AreaLightData> areaLights_;
+    struct DeviceScene {
+#define TRAZO_X(T, name) DeviceArray<T> name;
+        TRAZO_SCENE_ARRAYS(TRAZO_X)
+#undef TRAZO_X
+    } device_;
     SceneView view_{};
     AccumPixel* accum_ = nullptr;
     unsigned long long* rayCounter_ = nullptr;
