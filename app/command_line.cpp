@@ -16,6 +16,11 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         ->check(CLI::Range(1u, 1u << 24));
     app.add_option("--time", out.seconds, "Stop after this wall time in seconds (with --spp: whichever first)")
         ->check(CLI::PositiveNumber);
+    app.add_option("--target-error", out.targetError,
+                   "Stop once the estimated relative RMS error of the image falls below this (e.g. 0.01)")
+        ->check(CLI::Range(1e-6, 1.0));
+    app.add_flag("--fixed-grid", out.fixedGrid,
+                 "The thesis's estimator: every pass evaluates every stratum of every grid (for comparisons)");
     const std::map<std::string, BackendChoice> backends{
         {"auto", BackendChoice::Auto}, {"cpu", BackendChoice::Cpu}, {"cuda", BackendChoice::Cuda}};
     app.add_option("--backend", out.backend, "auto (CUDA when a device is present), cpu or cuda")

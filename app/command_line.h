@@ -15,6 +15,8 @@ struct CommandLine {
     std::string output = "out.bmp";
     std::optional<uint32_t> spp;
     double seconds = 0.0;
+    double targetError = 0.0;  // --target-error: stop once the estimated relative error is below this
+    bool fixedGrid = false;    // --fixed-grid: every stratum of every grid in each pass, as the thesis did
     BackendChoice backend = BackendChoice::Auto;
     unsigned threads = 0;
     uint32_t seed = 0;

@@ -10,6 +10,8 @@ namespace trazo {
 struct FrameParams {
     CameraFrame camera;
     uint32_t seed = 0;
+    // The thesis's estimator (--fixed-grid): every pass evaluates every stratum of every grid instead of one.
+    bool fixedGrid = false;
 };
 
 // Accumulation: float RGB sums and the number of samples added, per pixel.
