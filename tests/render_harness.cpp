@@ -34,7 +34,8 @@ RenderedImage renderScene(const Scene& scene, const Diagnostics& diags, const Re
     image.height = request.height ? request.height : scene.settings.renderHeight;
     backend->upload(flat.arrays);
     backend->resize(image.width, image.height);
-    const FrameParams frame = makeFrameParams(scene, image.width, image.height, request.seed);
+    FrameParams frame = makeFrameParams(scene, image.width, image.height, request.seed);
+    frame.fixedGrid = request.fixedGrid;
     RenderLimits limits;
     limits.passes = request.passes;
     image.rays = renderProgressive(*backend, frame, limits).rays;

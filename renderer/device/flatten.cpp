@@ -62,6 +62,31 @@ FeatureMask materialFeatures(const MaterialData& m, const SceneSettings& s) {
     return f;
 }
 
+bool usesTextures(const Material& m) {
+    return m.diffuseTexture >= 0 || m.specularTexture >= 0 || m.emissiveTexture >= 0 || m.normalTexture >= 0;
+}
+
+// Texels of the textures that materials use, each stored once, and the materials' indices remapped to them.
+void flattenTextures(const Scene& scene, SceneArrays& out) {
+    std::vector<int32_t> remap(scene.textures.size(), -1);
+    auto place = [&](int32_t& index) {
+        if (index < 0) return;
+        if (remap[index] < 0) {
+            const TextureImage& image = *scene.textures[index].image;
+            remap[index] = (int32_t)out.textures.size();
+            out.textures.push_back({(uint32_t)out.texels.size(), (uint32_t)image.width, (uint32_t)image.height});
+            out.texels.insert(out.texels.end(), image.texels.begin(), image.texels.end());
+        }
+        index = remap[index];
+    };
+    for (MaterialData& m : out.materials) {
+        place(m.diffuseTexture);
+        place(m.specularTexture);
+        place(m.emissiveTexture);
+        place(m.normalTexture);
+    }
+}
+
 }  // namespace
 
 void areaLightAxes(Vec3 normal, float rollAngle, Vec3& u, Vec3& v) {
@@ -102,6 +127,7 @@ FlattenResult flatten(const Scene& scene) {
     }
     if (!materials.defaultUsed) materials.data.pop_back();
     out.materials = std::move(materials.data);
+    flattenTextures(scene, out);
 
     for (const PointLight& l : scene.pointLights) out.pointLights.push_back({l.position, l.color});
     for (const AreaLight& l : scene.areaLights) {
@@ -126,11 +152,11 @@ FlattenResult flatten(const Scene& scene) {
     // Parsed and kept in the host scene, rendered by later issues; everything else still renders.
     if (!scene.meshes.empty())
         result.unsupported.push_back(std::to_string(scene.meshes.size()) + " Mesh object(s) are not rendered yet");
-    if (f & kFeatureTextures)
-        result.unsupported.push_back("material textures are ignored (only their colours are used) for now");
-    if (f & kFeatureIndirect)
-        result.unsupported.push_back("indirect light (IndirectQuality " + std::to_string(s.indirectQuality) +
-                                     ") is not computed yet: direct light only");
+    for (const Csg& csg : scene.csgs) {
+        if (csg.tree && csg.material != kDefaultMaterial && usesTextures(scene.materials[csg.material]))
+            result.unsupported.push_back(csg.where.file + ":" + std::to_string(csg.where.line) +
+                                         ": CSG solids have no texture coordinates: the material's textures are ignored");
+    }
     return result;
 }
 
@@ -140,6 +166,8 @@ uint32_t fullCyclePasses(const SceneArrays& a) {
     for (const AreaLightData& l : a.areaLights) include((uint64_t)l.cellsU * l.cellsV);
     const uint64_t q = a.settings.reflectionQuality;
     if ((a.features & kFeatureGlossy) && q > 0) include(2 * q * q);
+    const uint64_t qi = a.settings.indirectQuality;
+    if ((a.features & kFeatureIndirect) && qi > 0) include(2 * qi * qi);
     return (uint32_t)std::max<uint64_t>(cycle, 1);
 }
 

@@ -9,6 +9,7 @@
 #include "device/feature_mask.h"
 #include "geometry/csg.h"
 #include "geometry/shapes.h"
+#include "shading/texture.h"
 
 namespace trazo {
 
@@ -21,7 +22,7 @@ struct MaterialData {
     float refractionIndex;
     float reflectionHalfAngle;  // radians; 0 = mirror
     float reflectionAmount;
-    int32_t diffuseTexture, specularTexture, emissiveTexture, normalTexture;  // -1 = none (issue 3)
+    int32_t diffuseTexture, specularTexture, emissiveTexture, normalTexture;  // into textures; -1 = none
 };
 
 enum class ObjectKind : uint32_t { Sphere = 0, Box = 1, Cylinder = 2, Csg = 3 };
@@ -65,7 +66,9 @@ struct RenderSettings {
     X(ObjectRef, objects)              \
     X(MaterialData, materials)         \
     X(PointLightData, pointLights)     \
-    X(AreaLightData, areaLights)
+    X(AreaLightData, areaLights)       \
+    X(TextureData, textures)           \
+    X(Vec3, texels)
 
 // Owning host copy of the flattened scene; what Backend::upload takes.
 struct SceneArrays {

@@ -27,8 +27,18 @@ struct ShadingPoint {
 // Identifies one stratified grid of one shading point in the pixel's sample tree, for stratumForPass.
 struct StrataKey {
     uint32_t seed, pixelIndex, pass, node;
+    bool fixedGrid;  // the thesis's estimator: every stratum in every pass
     TRAZO_HD uint32_t stratum(uint32_t grid, uint32_t count) const {
         return stratumForPass(seed, pixelIndex, hashCombine(node, grid), pass, count);
+    }
+    // The strata of a grid of `count` this pass visits: [first, first + visited). One, cycling over passes;
+    // or all of them with the fixed grid.
+    TRAZO_HD void strata(uint32_t grid, uint32_t count, uint32_t& first, uint32_t& visited) const {
+        first = fixedGrid ? 0u : stratum(grid, count);
+        visited = fixedGrid ? count : 1u;
+    }
+    TRAZO_HD StrataKey child(uint32_t branch) const {
+        return StrataKey{seed, pixelIndex, pass, hashCombine(node, branch), fixedGrid};
     }
 };
 
@@ -62,11 +72,16 @@ TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const 
     if constexpr ((F & kFeatureAreaLights) != 0) {
     for (uint32_t i = 0; i < scene.areaLights.count; ++i) {
         const AreaLightData& light = scene.areaLights[i];
-        const uint32_t s = strata.stratum(kGridAreaLightBase + i, light.cellsU * light.cellsV);
-        const float su = (float(s % light.cellsU) + rng.next()) / float(light.cellsU);
-        const float sv = (float(s / light.cellsU) + rng.next()) / float(light.cellsV);
-        const Vec3 x = light.rect.center + light.rect.halfU * (2.0f * su - 1.0f) + light.rect.halfV * (2.0f * sv - 1.0f);
-        sum += shadeFromPoint(scene, sp, m, x, light.color, rays);
+        uint32_t first, visited;
+        strata.strata(kGridAreaLightBase + i, light.cellsU * light.cellsV, first, visited);
+        Vec3 lightSum(0.0f);
+        for (uint32_t s = first; s < first + visited; ++s) {
+            const float su = (float(s % light.cellsU) + rng.next()) / float(light.cellsU);
+            const float sv = (float(s / light.cellsU) + rng.next()) / float(light.cellsV);
+            const Vec3 x = light.rect.center + light.rect.halfU * (2.0f * su - 1.0f) + light.rect.halfV * (2.0f * sv - 1.0f);
+            lightSum += shadeFromPoint(scene, sp, m, x, light.color, rays);
+        }
+        sum += visited == 1 ? lightSum : lightSum / float(visited);
     }
     }
     return sum;

@@ -7,7 +7,9 @@
 
 #include "integrator/direct_light.h"
 #include "integrator/frame_params.h"
+#include "integrator/indirect_light.h"
 #include "integrator/scattering.h"
+#include "integrator/surface.h"
 
 namespace trazo {
 
@@ -23,11 +25,10 @@ struct PendingRay {
     uint32_t node;      // identifies this ray in the pixel's sample tree (decorrelates its strata)
 };
 
-// The antialiasing position of a pass: one of the k×k sub-pixel centres (SPEC §5 Pixel).
-TRAZO_HD void antialiasingPosition(uint32_t antialiasing, const StrataKey& strata, uint32_t px, uint32_t py,
-                                   float& x, float& y) {
-    const uint32_t k = antialiasing >= 16 ? 4u : (antialiasing >= 4 ? 2u : 1u);
-    const uint32_t s = strata.stratum(kGridAntialiasing, k * k);
+TRAZO_HD uint32_t antialiasingSide(uint32_t antialiasing) { return antialiasing >= 16 ? 4u : (antialiasing >= 4 ? 2u : 1u); }
+
+// Antialiasing position s of the k×k sub-pixel centres (SPEC §5 Pixel).
+TRAZO_HD void antialiasingPosition(uint32_t k, uint32_t s, uint32_t px, uint32_t py, float& x, float& y) {
     x = float(px) + (float(s % k) + 0.5f) / float(k);
     y = float(py) + (float(s / k) + 0.5f) / float(k);
 }
@@ -43,26 +44,22 @@ TRAZO_HD Vec3 sampleReflection(const ShadingPoint& sp, Vec3 d, const MaterialDat
                                const StrataKey& strata, SampleStream& rng) {
     const Vec3 mirror = reflectDirection(d, sp.n);
     if (m.reflectionHalfAngle <= 0.0f) return mirror;
+    // One stratum per pass even with the fixed grid: the thesis's full fan at every bounce would need a stack
+    // of (2q²)^ReflectionSteps rays.
     const uint32_t s = strata.stratum(kGridGlossy, 2 * quality * quality);
     const float theta = (float(s % quality) + rng.next()) / float(quality) * m.reflectionHalfAngle;
     const float phi = (float(s / quality) + rng.next()) / float(2 * quality) * 6.28318530718f;
     return directionInCone(mirror, theta, phi);
 }
 
+// Color(0) along a camera ray: the whole tree of reflected and transmitted rays, as an explicit stack.
 template <FeatureMask F>
-TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
-                           uint32_t pass, uint32_t& rays) {
-    const uint32_t pixelIndex = py * frame.camera.width + px;
-    SampleStream rng(frame.seed, pixelIndex, pass);
+TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const StrataKey& pixelStrata,
+                             SampleStream& rng, uint32_t& rays) {
     const RenderSettings& settings = scene.settings;
-
     PendingRay stack[kMaxPendingRays];
     int pending = 0;
-    {
-        float x, y;
-        antialiasingPosition(settings.antialiasing, StrataKey{frame.seed, pixelIndex, pass, 1u}, px, py, x, y);
-        stack[pending++] = PendingRay{generateCameraRay(frame.camera, x, y), Vec3(1.0f), 0u, 0u, 1u};
-    }
+    stack[pending++] = PendingRay{cameraRay, Vec3(1.0f), 0u, 0u, 1u};
     auto push = [&](const PendingRay& r) {
         if (pending < kMaxPendingRays) stack[pending++] = r;
     };
@@ -80,34 +77,43 @@ TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uin
             color += r.weight * scene.areaLights[hit.areaLight].color;
             continue;
         }
-        const MaterialData& m = scene.materials[scene.objects[hit.object].material];
+        const ObjectRef& object = scene.objects[hit.object];
+        MaterialData m = scene.materials[object.material];
         const Vec3 d = r.ray.direction;
         const Vec3 p = pointAt(r.ray, hit.t);
         const Vec3 pError = hitPointError(r.ray, hit.t);
-        const bool frontFacing = dot(d, hit.normal) < 0.0f;
+        SurfacePoint surface = surfaceAt(scene, object, hit, p);
+        applyTextures(scene, m, surface);
+        const bool frontFacing = dot(d, surface.ng) < 0.0f;
 
         constexpr bool kRefraction = (F & kFeatureRefraction) != 0;
         constexpr bool kReflection = (F & kFeatureReflection) != 0;
+        constexpr bool kIndirect = (F & kFeatureIndirect) != 0;
         if (kRefraction && !frontFacing && m.opacity < 1.0f) {
             // Leaving a transparent solid: refract out (η = n/1) or reflect internally; nothing is shaded.
             if (r.segments >= kMaxTransmissionSegments) continue;
-            const Vec3 nInside = -hit.normal;
+            const Vec3 nInside = -surface.n;
             Vec3 out;
             if (!refractDirection(d, nInside, m.refractionIndex, out)) out = reflectDirection(d, nInside);
-            push(PendingRay{Ray{offsetRayOrigin(p, pError, hit.normal, out), out}, r.weight, r.reflectionDepth,
+            push(PendingRay{Ray{offsetRayOrigin(p, pError, surface.ng, out), out}, r.weight, r.reflectionDepth,
                             r.segments + 1, hashCombine(r.node, 3)});
             continue;
         }
 
         // Normals turned to face the incoming ray (opaque insides, open surfaces).
-        const Vec3 ng = frontFacing ? hit.normal : -hit.normal;
-        const ShadingPoint sp{p, pError, ng, ng, -d};
-        const StrataKey strata{frame.seed, pixelIndex, pass, r.node};
+        const ShadingPoint sp{p, pError, frontFacing ? surface.ng : -surface.ng,
+                              frontFacing ? surface.n : -surface.n, -d};
+        const StrataKey strata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass, r.node,
+                               pixelStrata.fixedGrid};
 
         const float a = kReflection && materialReflects(m, settings, r.reflectionDepth) ? m.reflectionAmount : 0.0f;
         const float directWeight = (1.0f - a) * m.opacity;  // 0 for pure mirrors and clear glass: no shadow rays
-        const Vec3 direct = directWeight > 0.0f ? directLight<F>(scene, sp, m, strata, rng, rays) : Vec3(0.0f);
-        color += r.weight * (direct * directWeight + m.emissive);
+        Vec3 local(0.0f);
+        if (directWeight > 0.0f) {
+            local = directLight<F>(scene, sp, m, strata, rng, rays);
+            if constexpr (kIndirect) local += indirectLight<F>(scene, sp, m, strata, rng, rays);
+        }
+        color += r.weight * (local * directWeight + m.emissive);
 
         if (kReflection && a > 0.0f) {
             const Vec3 dir = sampleReflection(sp, d, m, settings.reflectionQuality, strata, rng);
@@ -125,6 +131,25 @@ TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uin
         }
     }
     return color;
+}
+
+// One sample of one pixel: the pass's antialiasing position (all of them with the fixed grid, averaged).
+template <FeatureMask F>
+TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
+                           uint32_t pass, uint32_t& rays) {
+    const uint32_t pixelIndex = py * frame.camera.width + px;
+    SampleStream rng(frame.seed, pixelIndex, pass);
+    const StrataKey pixelStrata{frame.seed, pixelIndex, pass, 1u, frame.fixedGrid};
+    const uint32_t k = antialiasingSide(scene.settings.antialiasing);
+    uint32_t first, visited;
+    pixelStrata.strata(kGridAntialiasing, k * k, first, visited);
+    Vec3 color(0.0f);
+    for (uint32_t s = first; s < first + visited; ++s) {
+        float x, y;
+        antialiasingPosition(k, s, px, py, x, y);
+        color += traceCameraRay<F>(scene, generateCameraRay(frame.camera, x, y), pixelStrata, rng, rays);
+    }
+    return visited == 1 ? color : color / float(visited);
 }
 
 }  // namespace trazo

@@ -10,19 +10,20 @@
 namespace trazo {
 
 // Bits worth a separate instance (each guards a loop or a branch with ray work behind it).
-constexpr FeatureMask kSpecialisedFeatures = kFeatureAreaLights | kFeatureReflection | kFeatureRefraction;
-constexpr uint32_t kSampleVariantCount = 8;
+constexpr FeatureMask kSpecialisedFeatures =
+    kFeatureAreaLights | kFeatureReflection | kFeatureRefraction | kFeatureIndirect;
+constexpr uint32_t kSampleVariantCount = 16;
 // The index of the instance with every specialised feature on: the oracle.
 constexpr uint32_t kAllFeaturesVariant = kSampleVariantCount - 1;
 
 constexpr FeatureMask variantFeatures(uint32_t variant) {
     return ((variant & 1u) ? kFeatureAreaLights : 0u) | ((variant & 2u) ? kFeatureReflection : 0u) |
-           ((variant & 4u) ? kFeatureRefraction : 0u);
+           ((variant & 4u) ? kFeatureRefraction : 0u) | ((variant & 8u) ? kFeatureIndirect : 0u);
 }
 
 constexpr uint32_t sampleVariantFor(FeatureMask mask) {
     return ((mask & kFeatureAreaLights) ? 1u : 0u) | ((mask & kFeatureReflection) ? 2u : 0u) |
-           ((mask & kFeatureRefraction) ? 4u : 0u);
+           ((mask & kFeatureRefraction) ? 4u : 0u) | ((mask & kFeatureIndirect) ? 8u : 0u);
 }
 
 static_assert(variantFeatures(kAllFeaturesVariant) == kSpecialisedFeatures);

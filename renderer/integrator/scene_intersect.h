@@ -18,6 +18,8 @@ struct SurfaceHit {
     Vec3 normal;        // unit outward geometric normal
     uint32_t object;    // index into SceneView::objects, or kNoObject when a light rectangle was hit
     uint32_t areaLight; // index of the light rectangle hit (when object == kNoObject)
+    uint32_t triangle;  // mesh hits: index into SceneView::triangles, with barycentrics b1, b2
+    float b1, b2;
 };
 
 TRAZO_HD bool intersectObject(const SceneView& scene, const ObjectRef& o, const Ray& ray, float tMax, ShapeHit& hit) {
@@ -37,14 +39,14 @@ TRAZO_HD bool intersectScene(const SceneView& scene, const Ray& ray, float tMax,
     for (uint32_t i = 0; i < scene.objects.count; ++i) {
         if (intersectObject(scene, scene.objects[i], ray, tMax, hit)) {
             tMax = hit.t;
-            out = SurfaceHit{hit.t, hit.normal, i, 0};
+            out = SurfaceHit{hit.t, hit.normal, i, 0, 0, 0.0f, 0.0f};
             found = true;
         }
     }
     for (uint32_t i = 0; i < scene.areaLights.count; ++i) {
         if (intersectRectangle(scene.areaLights[i].rect, ray, 0.0f, tMax, hit)) {
             tMax = hit.t;
-            out = SurfaceHit{hit.t, hit.normal, kNoObject, i};
+            out = SurfaceHit{hit.t, hit.normal, kNoObject, i, 0, 0.0f, 0.0f};
             found = true;
         }
     }

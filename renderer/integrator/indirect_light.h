@@ -1,0 +1,53 @@
+// Indirect(P) of SPEC §5: one bounce of diffuse inter-reflection. Directions about the shading normal with
+// θ uniform in [0, π/2) and φ uniform in [0, 2π), stratified q θ-bins × 2q φ-bins; a pass takes one jittered
+// stratum (all of them with the fixed grid). What a direction finds at Q is Q's direct light plus its
+// emission, carried back through P's Oren–Nayar term: Kd·ON(N, ω, V, σ) ⊙ (Direct(Q) + Ke(Q)).
+#pragma once
+
+#include "integrator/direct_light.h"
+#include "integrator/scattering.h"
+#include "integrator/surface.h"
+
+namespace trazo {
+
+constexpr uint32_t kGridIndirect = 2;
+constexpr uint32_t kBranchIndirect = 4;  // sample-tree branch of the points Q (their own light strata)
+
+// Shading point at a hit, with both normals turned towards the ray that found it.
+TRAZO_HD ShadingPoint facingShadingPoint(const Ray& ray, float t, const SurfacePoint& s) {
+    const bool front = dot(ray.direction, s.ng) < 0.0f;
+    return ShadingPoint{pointAt(ray, t), hitPointError(ray, t), front ? s.ng : -s.ng, front ? s.n : -s.n,
+                        -ray.direction};
+}
+
+template <FeatureMask F>
+TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
+                            const StrataKey& strata, SampleStream& rng, uint32_t& rays) {
+    const RenderSettings& settings = scene.settings;
+    const uint32_t q = settings.indirectQuality;
+    if (q == 0 || !(settings.colorBleeding > 0.0f) || isBlack(m.diffuse) || dot(sp.n, sp.v) <= 0.0f) return Vec3(0.0f);
+    uint32_t first, visited;
+    strata.strata(kGridIndirect, 2 * q * q, first, visited);
+    const StrataKey atQ = strata.child(kBranchIndirect);
+    Vec3 sum(0.0f);
+    for (uint32_t k = first; k < first + visited; ++k) {
+        const float theta = (float(k % q) + rng.next()) / float(q) * 1.57079632679f;
+        const float phi = (float(k / q) + rng.next()) / float(2 * q) * 6.28318530718f;
+        const Vec3 w = directionInCone(sp.n, theta, phi);
+        if (dot(w, sp.ng) <= 0.0f) continue;  // below the geometric surface: contributes 0
+        const Ray ray{offsetRayOrigin(sp.p, sp.pError, sp.ng, w), w};
+        ++rays;
+        SurfaceHit hit;
+        if (!intersectScene(scene, ray, INFINITY, hit) || hit.object == kNoObject) continue;  // sky or a light
+        const ObjectRef& o = scene.objects[hit.object];
+        MaterialData mq = scene.materials[o.material];
+        SurfacePoint sq = surfaceAt(scene, o, hit, pointAt(ray, hit.t));
+        applyTextures(scene, mq, sq);
+        const ShadingPoint spq = facingShadingPoint(ray, hit.t, sq);
+        const Vec3 arriving = directLight<F>(scene, spq, mq, atQ, rng, rays) + mq.emissive;
+        sum += m.diffuse * evalOrenNayar(sp.n, w, sp.v, m.roughness) * arriving;
+    }
+    return sum * (settings.colorBleeding / float(visited));
+}
+
+}  // namespace trazo
