@@ -2,6 +2,9 @@
 #include "device/flatten.h"
 
 #include "device/flatten_csg.h"
+#include "device/flatten_mesh.h"
+
+#include "accel/bvh_build.h"
 
 #include <cmath>
 #include <numeric>
@@ -87,6 +90,63 @@ void flattenTextures(const Scene& scene, SceneArrays& out) {
     }
 }
 
+Aabb objectBounds(const SceneArrays& a, const ObjectRef& o) {
+    Aabb b;
+    switch (o.kind) {
+        case ObjectKind::Sphere: {
+            const SphereShape& s = a.spheres[o.index];
+            b.grow(s.center - Vec3(s.radius));
+            b.grow(s.center + Vec3(s.radius));
+            break;
+        }
+        case ObjectKind::Box:
+            for (int c = 0; c < 8; ++c)
+                b.grow(a.boxes[o.index].worldFromObject.applyToPoint(
+                    Vec3((c & 1) ? 0.5f : -0.5f, (c & 2) ? 0.5f : -0.5f, (c & 4) ? 0.5f : -0.5f)));
+            break;
+        case ObjectKind::Cylinder: {
+            // Each cap is a disk: along axis i it reaches r·√(1 − axisᵢ²) from its centre.
+            const CylinderShape& c = a.cylinders[o.index];
+            const Vec3 reach = Vec3(std::sqrt(std::fmax(0.0f, 1.0f - c.axis.x * c.axis.x)),
+                                    std::sqrt(std::fmax(0.0f, 1.0f - c.axis.y * c.axis.y)),
+                                    std::sqrt(std::fmax(0.0f, 1.0f - c.axis.z * c.axis.z))) * c.radius;
+            for (const Vec3 centre : {c.base, c.base + c.axis * c.height}) {
+                b.grow(centre - reach);
+                b.grow(centre + reach);
+            }
+            break;
+        }
+        case ObjectKind::Csg: {
+            const CsgShape& csg = a.csgs[o.index];
+            const CsgNodeData& root = a.csgNodes[csg.firstNode + csg.nodeCount - 1];
+            b.grow(root.boundsMin);
+            b.grow(root.boundsMax);
+            break;
+        }
+        case ObjectKind::Mesh:
+            b.grow(a.meshNodes[a.meshes[o.index].nodeOffset].boundsMin);
+            b.grow(a.meshNodes[a.meshes[o.index].nodeOffset].boundsMax);
+            break;
+    }
+    // A little slack: the shapes' own tests are exact, the box test must never be the one that misses.
+    const Vec3 pad = abs(b.max - b.min) * 1e-5f + abs(b.min) * 1e-6f + abs(b.max) * 1e-6f;
+    if (b.empty()) return Aabb{Vec3(0.0f), Vec3(0.0f)};  // an empty CSG solid: never hit anyway
+    return Aabb{b.min - pad, b.max + pad};
+}
+
+// The top-level BVH over every object; objects are reordered into its leaf order.
+void buildTopLevel(SceneArrays& out) {
+    std::vector<Aabb> bounds;
+    for (const ObjectRef& o : out.objects) bounds.push_back(objectBounds(out, o));
+    BvhBuildOptions options;
+    options.maxLeafSize = 2;
+    Bvh bvh = buildBvh(bounds, options);
+    std::vector<ObjectRef> ordered;
+    for (uint32_t old : bvh.primitiveOrder) ordered.push_back(out.objects[old]);
+    out.objects = std::move(ordered);
+    out.topNodes = std::move(bvh.nodes);
+}
+
 }  // namespace
 
 void areaLightAxes(Vec3 normal, float rollAngle, Vec3& u, Vec3& v) {
@@ -125,6 +185,15 @@ FlattenResult flatten(const Scene& scene) {
         out.objects.push_back({ObjectKind::Csg, (uint32_t)out.csgs.size(), materials.index(csg.material)});
         out.csgs.push_back(flattenCsg(csg, out.csgNodes));
     }
+    for (const Mesh& mesh : scene.meshes) {
+        if (!mesh.data || mesh.data->corners.empty()) continue;
+        const uint32_t index = appendMesh(prepareMesh(*mesh.data, composeTransforms(mesh.transforms)), out);
+        out.objects.push_back({ObjectKind::Mesh, index, materials.index(mesh.material)});
+        if (!mesh.data->hasUvs && mesh.material != kDefaultMaterial && usesTextures(scene.materials[mesh.material]))
+            result.unsupported.push_back(mesh.where.file + ":" + std::to_string(mesh.where.line) + ": " + mesh.source +
+                                         " has no texture coordinates: the material's textures are ignored on it");
+    }
+    buildTopLevel(out);
     if (!materials.defaultUsed) materials.data.pop_back();
     out.materials = std::move(materials.data);
     flattenTextures(scene, out);
@@ -149,9 +218,6 @@ FlattenResult flatten(const Scene& scene) {
     if (!scene.csgs.empty()) f |= kFeatureCsg;
     out.features = f;
 
-    // Parsed and kept in the host scene, rendered by later issues; everything else still renders.
-    if (!scene.meshes.empty())
-        result.unsupported.push_back(std::to_string(scene.meshes.size()) + " Mesh object(s) are not rendered yet");
     for (const Csg& csg : scene.csgs) {
         if (csg.tree && csg.material != kDefaultMaterial && usesTextures(scene.materials[csg.material]))
             result.unsupported.push_back(csg.where.file + ":" + std::to_string(csg.where.line) +

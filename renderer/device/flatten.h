@@ -1,4 +1,5 @@
-// flatten(): host Scene -> SceneArrays (world-space shapes, material indices, feature mask).
+// flatten(): host Scene -> SceneArrays (world-space shapes and meshes, textures, the two BVH levels,
+// material indices, feature mask).
 #pragma once
 
 #include <string>
@@ -11,8 +12,8 @@ namespace trazo {
 
 struct FlattenResult {
     SceneArrays arrays;
-    // One line per scene feature this build cannot render yet (meshes, textures, indirect light);
-    // the rest of the scene renders.
+    // One line per part of the scene that is read but not drawn as written (textures on a CSG solid or on
+    // a mesh without uvs); the rest of the scene renders.
     std::vector<std::string> unsupported;
 };
 

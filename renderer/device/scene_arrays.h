@@ -5,9 +5,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "accel/bvh_node.h"
 #include "core/vec3.h"
 #include "device/feature_mask.h"
 #include "geometry/csg.h"
+#include "geometry/mesh_shape.h"
 #include "geometry/shapes.h"
 #include "shading/texture.h"
 
@@ -25,9 +27,10 @@ struct MaterialData {
     int32_t diffuseTexture, specularTexture, emissiveTexture, normalTexture;  // into textures; -1 = none
 };
 
-enum class ObjectKind : uint32_t { Sphere = 0, Box = 1, Cylinder = 2, Csg = 3 };
+enum class ObjectKind : uint32_t { Sphere = 0, Box = 1, Cylinder = 2, Csg = 3, Mesh = 4 };
 
-// One renderable object: which shape array, which element, which material.
+// One renderable object: which shape array, which element, which material. Objects are stored in the order
+// of the top-level BVH (topNodes), whose leaves cover ranges of them.
 struct ObjectRef {
     ObjectKind kind;
     uint32_t index;
@@ -68,7 +71,12 @@ struct RenderSettings {
     X(PointLightData, pointLights)     \
     X(AreaLightData, areaLights)       \
     X(TextureData, textures)           \
-    X(Vec3, texels)
+    X(Vec3, texels)                    \
+    X(MeshShape, meshes)               \
+    X(BvhNode, meshNodes)              \
+    X(MeshTriangle, triangles)         \
+    X(TriangleCorners, triangleCorners) \
+    X(BvhNode, topNodes)
 
 // Owning host copy of the flattened scene; what Backend::upload takes.
 struct SceneArrays {

@@ -1,6 +1,8 @@
 // The shapes as the kernels see them: plain structs in world space (boxes keep both transforms).
 #pragma once
 
+#include <cstdint>
+
 #include "core/affine.h"
 #include "core/vec3.h"
 
@@ -38,6 +40,8 @@ struct RectangleShape {
 struct ShapeHit {
     float t;
     Vec3 normal;
+    uint32_t triangle;  // meshes only: the triangle hit (index into SceneView::triangles) and its
+    float b1, b2;       // barycentrics; analytic shapes leave these unset
 };
 
 }  // namespace trazo

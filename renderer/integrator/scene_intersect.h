@@ -1,13 +1,16 @@
 // Ray queries against the whole scene: nearest hit (with visible area-light rectangles) and shadow any-hit.
-// A linear loop over the objects for now; the two-level BVH of issue 3 replaces the loop, not the interface.
+// Two levels of BVH: the top level over the scene's objects (SceneView::topNodes, objects in its leaf
+// order), and one per mesh over its triangles. Area-light rectangles are few and tested one by one.
 #pragma once
 
+#include "accel/bvh_traverse.h"
 #include "device/scene_arrays.h"
 #include "geometry/csg.h"
 #include "geometry/intersect_box.h"
 #include "geometry/intersect_cylinder.h"
 #include "geometry/intersect_rectangle.h"
 #include "geometry/intersect_sphere.h"
+#include "geometry/intersect_triangle.h"
 
 namespace trazo {
 
@@ -22,12 +25,55 @@ struct SurfaceHit {
     float b1, b2;
 };
 
+// Nearest triangle of the mesh in (tMin, tMax); the normal follows the triangle's winding (p0, p1, p2).
+TRAZO_HD bool intersectMesh(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMin, float tMax,
+                            ShapeHit& hit) {
+    const TriangleRay tr = makeTriangleRay(ray);
+    const MeshTriangle* triangles = scene.triangles.data + mesh.triangleOffset;
+    uint32_t best = 0;
+    TriangleHit bestHit{};
+    auto leaf = [&](uint32_t first, uint32_t count, float& tNearest) {
+        bool any = false;
+        for (uint32_t i = first; i < first + count; ++i) {
+            TriangleHit h;
+            if (intersectTriangle(tr, triangles[i].p0, triangles[i].p1, triangles[i].p2, tMin, tNearest, h)) {
+                tNearest = h.t;
+                bestHit = h;
+                best = i;
+                any = true;
+            }
+        }
+        return any;
+    };
+    if (!traverseClosest(scene.meshNodes.data + mesh.nodeOffset, ray, tMin, tMax, leaf)) return false;
+    const MeshTriangle& t = triangles[best];
+    hit.t = bestHit.t;
+    hit.normal = normalize(cross(t.p1 - t.p0, t.p2 - t.p0));
+    hit.triangle = mesh.triangleOffset + best;
+    hit.b1 = bestHit.b1;
+    hit.b2 = bestHit.b2;
+    return true;
+}
+
+TRAZO_HD bool meshBlocks(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMax) {
+    const TriangleRay tr = makeTriangleRay(ray);
+    const MeshTriangle* triangles = scene.triangles.data + mesh.triangleOffset;
+    auto leaf = [&](uint32_t first, uint32_t count, float tLimit) {
+        TriangleHit h;
+        for (uint32_t i = first; i < first + count; ++i)
+            if (intersectTriangle(tr, triangles[i].p0, triangles[i].p1, triangles[i].p2, 0.0f, tLimit, h)) return true;
+        return false;
+    };
+    return traverseAny(scene.meshNodes.data + mesh.nodeOffset, ray, 0.0f, tMax, leaf);
+}
+
 TRAZO_HD bool intersectObject(const SceneView& scene, const ObjectRef& o, const Ray& ray, float tMax, ShapeHit& hit) {
     switch (o.kind) {
         case ObjectKind::Sphere: return intersectSphere(scene.spheres[o.index], ray, 0.0f, tMax, hit);
         case ObjectKind::Box: return intersectBox(scene.boxes[o.index], ray, 0.0f, tMax, hit);
         case ObjectKind::Cylinder: return intersectCylinder(scene.cylinders[o.index], ray, 0.0f, tMax, hit);
         case ObjectKind::Csg: return intersectCsg(scene.csgs[o.index], scene.csgNodes.data, ray, 0.0f, tMax, hit);
+        case ObjectKind::Mesh: return intersectMesh(scene, scene.meshes[o.index], ray, 0.0f, tMax, hit);
     }
     return false;
 }
@@ -35,14 +81,29 @@ TRAZO_HD bool intersectObject(const SceneView& scene, const ObjectRef& o, const 
 // Nearest object or area-light rectangle along the ray, in (0, tMax).
 TRAZO_HD bool intersectScene(const SceneView& scene, const Ray& ray, float tMax, SurfaceHit& out) {
     bool found = false;
-    ShapeHit hit;
-    for (uint32_t i = 0; i < scene.objects.count; ++i) {
-        if (intersectObject(scene, scene.objects[i], ray, tMax, hit)) {
-            tMax = hit.t;
-            out = SurfaceHit{hit.t, hit.normal, i, 0, 0, 0.0f, 0.0f};
+    if (scene.topNodes.count > 0) {
+        ShapeHit best{};
+        uint32_t bestObject = 0;
+        auto leaf = [&](uint32_t first, uint32_t count, float& tNearest) {
+            bool any = false;
+            for (uint32_t i = first; i < first + count; ++i) {
+                ShapeHit hit;
+                if (intersectObject(scene, scene.objects[i], ray, tNearest, hit)) {
+                    tNearest = hit.t;
+                    best = hit;
+                    bestObject = i;
+                    any = true;
+                }
+            }
+            return any;
+        };
+        if (traverseClosest(scene.topNodes.data, ray, 0.0f, tMax, leaf)) {
+            tMax = best.t;
+            out = SurfaceHit{best.t, best.normal, bestObject, 0, best.triangle, best.b1, best.b2};
             found = true;
         }
     }
+    ShapeHit hit;
     for (uint32_t i = 0; i < scene.areaLights.count; ++i) {
         if (intersectRectangle(scene.areaLights[i].rect, ray, 0.0f, tMax, hit)) {
             tMax = hit.t;
@@ -55,11 +116,20 @@ TRAZO_HD bool intersectScene(const SceneView& scene, const Ray& ray, float tMax,
 
 // True when any object blocks the segment (0, tMax). Light rectangles cast no shadow (SPEC §5).
 TRAZO_HD bool occluded(const SceneView& scene, const Ray& ray, float tMax) {
-    ShapeHit hit;
-    for (uint32_t i = 0; i < scene.objects.count; ++i) {
-        if (intersectObject(scene, scene.objects[i], ray, tMax, hit)) return true;
-    }
-    return false;
+    if (scene.topNodes.count == 0) return false;
+    auto leaf = [&](uint32_t first, uint32_t count, float tLimit) {
+        for (uint32_t i = first; i < first + count; ++i) {
+            const ObjectRef& o = scene.objects[i];
+            if (o.kind == ObjectKind::Mesh) {
+                if (meshBlocks(scene, scene.meshes[o.index], ray, tLimit)) return true;
+                continue;
+            }
+            ShapeHit hit;
+            if (intersectObject(scene, o, ray, tLimit, hit)) return true;
+        }
+        return false;
+    };
+    return traverseAny(scene.topNodes.data, ray, 0.0f, tMax, leaf);
 }
 
 }  // namespace trazo

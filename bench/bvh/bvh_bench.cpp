@@ -1,0 +1,239 @@
+// bvh_bench: BVH build time and quality, and Mrays/s of primary, shadow and random rays, over the bunny and
+// a generated ≥1M-triangle mesh; with Embree 3, the same scenes and rays traced by Embree for comparison.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "accel/bvh_build.h"
+#include "accel/bvh_traverse.h"
+#include "core/rng.h"
+#include "geometry/intersect_triangle.h"
+#include "geometry/tessellate.h"
+#include "scene/obj_reader.h"
+#if TRAZO_HAVE_EMBREE
+#include "embree_scene.h"
+#endif
+
+namespace {
+
+using namespace trazo;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// One query of a batch: the ray, its range, and what was found (nearest t, or 1/0 for occlusion).
+struct Query {
+    Ray ray;
+    float tMin, tMax;
+};
+
+struct TriangleScene {
+    std::vector<Vec3> triangles;  // original order
+    std::vector<Vec3> ordered;    // BVH order
+    Bvh bvh;
+    Aabb bounds;
+
+    float intersect(const Ray& ray, float tMin, float tMax) const {
+        const TriangleRay tr = makeTriangleRay(ray);
+        const Vec3* p = ordered.data();
+        traverseClosest(bvh.nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float& t) {
+            bool hit = false;
+            for (uint32_t i = first; i < first + count; ++i) {
+                TriangleHit h;
+                if (intersectTriangle(tr, p[3 * i], p[3 * i + 1], p[3 * i + 2], tMin, t, h)) {
+                    t = h.t;
+                    hit = true;
+                }
+            }
+            return hit;
+        });
+        return tMax;
+    }
+    bool occluded(const Ray& ray, float tMin, float tMax) const {
+        const TriangleRay tr = makeTriangleRay(ray);
+        const Vec3* p = ordered.data();
+        return traverseAny(bvh.nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float t) {
+            for (uint32_t i = first; i < first + count; ++i) {
+                TriangleHit h;
+                if (intersectTriangle(tr, p[3 * i], p[3 * i + 1], p[3 * i + 2], tMin, t, h)) return true;
+            }
+            return false;
+        });
+    }
+};
+
+std::vector<Aabb> boundsOf(const std::vector<Vec3>& tris) {
+    std::vector<Aabb> b(tris.size() / 3);
+    for (size_t i = 0; i < b.size(); ++i) b[i] = triangleBounds(tris[3 * i], tris[3 * i + 1], tris[3 * i + 2]);
+    return b;
+}
+
+// Best of `runs` builds, in seconds.
+double timeBuild(const std::vector<Aabb>& bounds, unsigned threads, int runs) {
+    double best = 1e30;
+    for (int r = 0; r < runs; ++r) {
+        BvhBuildOptions options;
+        options.threads = threads;
+        const auto start = Clock::now();
+        const Bvh bvh = buildBvh(bounds, options);
+        best = std::min(best, secondsSince(start));
+    }
+    return best;
+}
+
+// Runs fn(i) for i in [0, n) on `threads` threads (interleaved chunks), returns seconds.
+template <class Fn>
+double parallelFor(size_t n, unsigned threads, Fn&& fn) {
+    const auto start = Clock::now();
+    std::vector<std::thread> pool;
+    constexpr size_t kChunk = 4096;
+    auto work = [&](unsigned part) {
+        for (size_t c = part * kChunk; c < n; c += (size_t)threads * kChunk)
+            for (size_t i = c; i < std::min(n, c + kChunk); ++i) fn(i);
+    };
+    for (unsigned p = 1; p < threads; ++p) pool.emplace_back(work, p);
+    work(0);
+    for (std::thread& t : pool) t.join();
+    return secondsSince(start);
+}
+
+struct RaySets {
+    std::vector<Query> primary, shadow, random;
+};
+
+// Primary rays of a 1024² pinhole camera framing the mesh; shadow rays from their hits to a point light
+// above the camera; random rays with origins in the bounds and uniform directions.
+RaySets makeRays(const TriangleScene& scene) {
+    RaySets sets;
+    const Vec3 center = scene.bounds.centroid();
+    const float radius = 0.5f * length(scene.bounds.extent());
+    const Vec3 eye = center + normalize(Vec3(0.3f, 0.4f, 1.0f)) * (2.6f * radius);
+    const Vec3 forward = normalize(center - eye), right = normalize(cross(forward, Vec3(0, 1, 0))),
+               up = cross(right, forward);
+    const float tanHalf = std::tan(0.5f * 45.0f * 3.14159265f / 180.0f);
+    constexpr int kSize = 1024;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const float sx = (2.0f * (x + 0.5f) / kSize - 1.0f) * tanHalf, sy = (1.0f - 2.0f * (y + 0.5f) / kSize) * tanHalf;
+            sets.primary.push_back({{eye, normalize(forward + right * sx + up * sy)}, 0.0f, INFINITY});
+        }
+    std::vector<float> hits(sets.primary.size());
+    parallelFor(hits.size(), std::max(1u, std::thread::hardware_concurrency()),
+                [&](size_t i) { hits[i] = scene.intersect(sets.primary[i].ray, 0.0f, INFINITY); });
+    const Vec3 light = eye + up * (1.5f * radius) + right * (0.5f * radius);
+    const float epsilon = 1e-4f * radius;  // keeps shadow rays off the surface they start on
+    for (size_t i = 0; i < hits.size(); ++i) {
+        if (!std::isfinite(hits[i])) continue;
+        const Vec3 p = pointAt(sets.primary[i].ray, hits[i]);
+        const float distance = length(light - p);
+        sets.shadow.push_back({{p, (light - p) / distance}, epsilon, distance});
+    }
+    for (uint32_t i = 0; i < kSize * kSize; ++i) {
+        auto u = [&](uint32_t d) { return bitsToUnitFloat(hashCombine(hashU32(i), d)); };
+        const Vec3 o = scene.bounds.min + scene.bounds.extent() * Vec3(u(0), u(1), u(2));
+        const float z = 1.0f - 2.0f * u(3), phi = 6.2831853f * u(4), s = std::sqrt(std::max(0.0f, 1.0f - z * z));
+        sets.random.push_back({{o, Vec3(s * std::cos(phi), s * std::sin(phi), z)}, 0.0f, INFINITY});
+    }
+    return sets;
+}
+
+void benchScene(const char* name, std::vector<Vec3> triangles, unsigned threads) {
+    TriangleScene scene;
+    scene.triangles = std::move(triangles);
+    const std::vector<Aabb> bounds = boundsOf(scene.triangles);
+    const uint32_t count = (uint32_t)bounds.size();
+    const int runs = count > 200000 ? 2 : 5;
+    const double build1 = timeBuild(bounds, 1, runs), buildN = timeBuild(bounds, threads, runs);
+    BvhBuildOptions options;
+    options.threads = threads;
+    scene.bvh = buildBvh(bounds, options);
+    for (const Aabb& b : bounds) scene.bounds.grow(b);
+    for (uint32_t id : scene.bvh.primitiveOrder)
+        scene.ordered.insert(scene.ordered.end(), {scene.triangles[3 * id], scene.triangles[3 * id + 1], scene.triangles[3 * id + 2]});
+
+    std::printf("\n== %s: %u triangles ==\n", name, count);
+    std::printf("Trazo build: %.1f ms (1 thread), %.1f ms (%u threads); %zu nodes, SAH cost %.2f, depth %u\n",
+                build1 * 1e3, buildN * 1e3, threads, scene.bvh.nodes.size(), bvhSahCost(scene.bvh), bvhDepth(scene.bvh));
+
+    const RaySets sets = makeRays(scene);
+    struct Kind {
+        const char* name;
+        const std::vector<Query>* rays;
+        bool shadow;
+    } kinds[] = {{"primary", &sets.primary, false}, {"shadow", &sets.shadow, true}, {"random", &sets.random, false}};
+
+#if TRAZO_HAVE_EMBREE
+    const bench::EmbreeScene embree1(scene.triangles, 1);
+    const bench::EmbreeScene embreeN(scene.triangles, 0);
+    std::printf("Embree build (default quality): %.1f ms (1 thread), %.1f ms (all threads)\n",
+                embree1.buildSeconds() * 1e3, embreeN.buildSeconds() * 1e3);
+    std::printf("%-8s %9s %8s | %12s %12s | %12s %13s %10s\n", "rays", "count", "hit %", "Trazo 1T", "Trazo NT",
+                "Embree 1T", "Trazo/Embree", "agreement");
+#else
+    std::printf("%-8s %9s %8s | %12s %12s\n", "rays", "count", "hit %", "Trazo 1T", "Trazo NT");
+#endif
+    for (const Kind& k : kinds) {
+        const std::vector<Query>& rays = *k.rays;
+        std::vector<float> result(rays.size());
+        auto trace = [&](size_t i) {
+            const Query& q = rays[i];
+            result[i] = k.shadow ? (float)scene.occluded(q.ray, q.tMin, q.tMax) : scene.intersect(q.ray, q.tMin, q.tMax);
+        };
+        const double t1 = parallelFor(rays.size(), 1, trace), tN = parallelFor(rays.size(), threads, trace);
+        size_t hits = 0;
+        for (float r : result) hits += k.shadow ? r != 0.0f : std::isfinite(r);
+        const double mr1 = rays.size() / t1 * 1e-6, mrN = rays.size() / tN * 1e-6;
+#if TRAZO_HAVE_EMBREE
+        std::vector<float> theirs(rays.size());
+        const double te = parallelFor(rays.size(), 1, [&](size_t i) {
+            const Query& q = rays[i];
+            theirs[i] = k.shadow ? (float)embree1.occluded(q.ray, q.tMin, q.tMax) : embree1.intersect(q.ray, q.tMin, q.tMax);
+        });
+        size_t agree = 0;
+        for (size_t i = 0; i < rays.size(); ++i)
+            agree += k.shadow ? (result[i] != 0.0f) == (theirs[i] != 0.0f) : std::isfinite(result[i]) == std::isfinite(theirs[i]);
+        const double mre = rays.size() / te * 1e-6;
+        std::printf("%-8s %9zu %7.2f%% | %7.2f Mr/s %7.2f Mr/s | %7.2f Mr/s %12.2fx %9.4f%%\n", k.name, rays.size(),
+                    100.0 * hits / rays.size(), mr1, mrN, mre, mr1 / mre, 100.0 * agree / rays.size());
+#else
+        std::printf("%-8s %9zu %7.2f%% | %7.2f Mr/s %7.2f Mr/s\n", k.name, rays.size(), 100.0 * hits / rays.size(), mr1, mrN);
+#endif
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = (unsigned)std::max(1, std::atoi(argv[++i]));
+        else {
+            std::fprintf(stderr, "usage: bvh_bench [--threads N]\n");
+            return 2;
+        }
+    }
+    std::printf("bvh_bench: %u threads (1T = one thread, NT = %u threads)\n", threads, threads);
+#if !TRAZO_HAVE_EMBREE
+    std::printf("Embree not found: comparison skipped\n");
+#endif
+
+    const std::string bunnyPath = std::string(TRAZO_SOURCE_DIR) + "/scenes/assets/bunny.obj";
+    Diagnostics diags;
+    const auto mesh = readObjFile(bunnyPath, diags);
+    if (mesh) {
+        std::vector<Vec3> tris;
+        for (const auto& corner : mesh->corners) tris.push_back(mesh->positions[corner.position]);
+        benchScene("bunny (scenes/assets/bunny.obj)", std::move(tris), threads);
+    } else {
+        std::printf("\n%s is missing or unreadable: make it with scenes/assets/make_bunny.sh\n", bunnyPath.c_str());
+    }
+    // 2·708·707 = 1,001,112 triangles, displaced so the surface is not a plain sphere.
+    benchScene("bumpy sphere (tessellateSphere, 708 rings x 708 segments)",
+               tessellateSphere({0, 0, 0}, 1.0f, 708, 708, 0.08f), threads);
+    return 0;
+}

@@ -1,0 +1,440 @@
+// Binned-SAH BVH builder (host). The top of the tree is split with binning spread over threads; the
+// subtrees below a fixed size become tasks built on a thread pool into their own arrays, concatenated at
+// the end in task order, so the layout does not depend on the thread count.
+#include "accel/bvh_build.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cassert>
+#include <thread>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace trazo {
+namespace {
+
+// Primitive bounds and original index packed in 32 bytes; the builder partitions these in place.
+struct PrimRef {
+    Vec3 min;
+    uint32_t id;
+    Vec3 max;
+    uint32_t pad;
+};
+
+// Ternary min/max compile to single SSE instructions (fminf's NaN rules do not), and the builder never
+// sees NaN bounds it must keep.
+inline float fastMin(float a, float b) { return a < b ? a : b; }
+inline float fastMax(float a, float b) { return a > b ? a : b; }
+inline void growBox(Aabb& box, Vec3 lo, Vec3 hi) {
+    box.min = {fastMin(box.min.x, lo.x), fastMin(box.min.y, lo.y), fastMin(box.min.z, lo.z)};
+    box.max = {fastMax(box.max.x, hi.x), fastMax(box.max.y, hi.y), fastMax(box.max.z, hi.z)};
+}
+inline void growBox(Aabb& box, const Aabb& b) { growBox(box, b.min, b.max); }
+inline Vec3 centroidOf(const PrimRef& r) { return (r.min + r.max) * 0.5f; }
+
+struct Range {
+    uint32_t begin = 0, end = 0, depth = 0;
+    Aabb bounds, centroids;
+    uint32_t count() const { return end - begin; }
+};
+
+// Maps a centroid coordinate to its bin: NaN and values below the range go to bin 0, the top to the last.
+struct BinMapping {
+    Vec3 origin, scale;
+    uint32_t binCount;
+    int binOf(float c, int axis) const {
+        const float f = (c - origin[axis]) * scale[axis];
+        const float last = (float)(binCount - 1);
+        return f > 0.0f ? (f < last ? (int)f : (int)last) : 0;
+    }
+};
+
+// Only the first `binCount` bins are used and initialised: a node's bins are set up half a million times.
+// (Plain floats: Vec3 and Aabb initialise their members, which would touch all kMaxBvhBins.)
+struct BinBox {
+    float lo[3], hi[3];
+    void grow(Vec3 bMin, Vec3 bMax) {
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = fastMin(lo[a], bMin[a]);
+            hi[a] = fastMax(hi[a], bMax[a]);
+        }
+    }
+    Aabb aabb() const {
+        Aabb b;
+        b.min = Vec3(lo[0], lo[1], lo[2]);
+        b.max = Vec3(hi[0], hi[1], hi[2]);
+        return b;
+    }
+};
+struct BinSet {
+    BinBox bounds[3][kMaxBvhBins];
+    uint32_t counts[3][kMaxBvhBins];
+    explicit BinSet(uint32_t binCount) {
+        for (int a = 0; a < 3; ++a)
+            for (uint32_t b = 0; b < binCount; ++b) {
+                bounds[a][b] = BinBox{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+                counts[a][b] = 0;
+            }
+    }
+};
+
+#if defined(__SSE2__)
+// The same arithmetic as BinMapping::binOf in four lanes (maxps returns 0 for NaN as binOf does), with
+// bin boxes grown by one minps/maxps: binning dominates the build.
+void binPrimitives(const PrimRef* refs, uint32_t count, const BinMapping& m, BinSet& bins) {
+    alignas(16) __m128 lo[3][kMaxBvhBins], hi[3][kMaxBvhBins];
+    for (int a = 0; a < 3; ++a)
+        for (uint32_t b = 0; b < m.binCount; ++b) {
+            lo[a][b] = _mm_setr_ps(bins.bounds[a][b].lo[0], bins.bounds[a][b].lo[1], bins.bounds[a][b].lo[2], 0.0f);
+            hi[a][b] = _mm_setr_ps(bins.bounds[a][b].hi[0], bins.bounds[a][b].hi[1], bins.bounds[a][b].hi[2], 0.0f);
+        }
+    const __m128 origin = _mm_setr_ps(m.origin.x, m.origin.y, m.origin.z, 0.0f);
+    const __m128 scale = _mm_setr_ps(m.scale.x, m.scale.y, m.scale.z, 0.0f);
+    const __m128 half = _mm_set1_ps(0.5f), zero = _mm_setzero_ps(), last = _mm_set1_ps((float)(m.binCount - 1));
+    for (uint32_t i = 0; i < count; ++i) {
+        const __m128 bMin = _mm_loadu_ps(&refs[i].min.x), bMax = _mm_loadu_ps(&refs[i].max.x);
+        const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_mul_ps(_mm_add_ps(bMin, bMax), half), origin), scale);
+        alignas(16) int32_t bin[4];
+        _mm_store_si128((__m128i*)bin, _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(f, zero), last)));
+        for (int a = 0; a < 3; ++a) {
+            lo[a][bin[a]] = _mm_min_ps(lo[a][bin[a]], bMin);
+            hi[a][bin[a]] = _mm_max_ps(hi[a][bin[a]], bMax);
+            ++bins.counts[a][bin[a]];
+        }
+    }
+    for (int a = 0; a < 3; ++a)
+        for (uint32_t b = 0; b < m.binCount; ++b) {
+            alignas(16) float l[4], h[4];
+            _mm_store_ps(l, lo[a][b]);
+            _mm_store_ps(h, hi[a][b]);
+            bins.bounds[a][b] = BinBox{{l[0], l[1], l[2]}, {h[0], h[1], h[2]}};
+        }
+}
+#else
+void binPrimitives(const PrimRef* refs, uint32_t count, const BinMapping& m, BinSet& bins) {
+    for (uint32_t i = 0; i < count; ++i) {
+        const PrimRef& r = refs[i];
+        const Vec3 c = centroidOf(r);
+        for (int a = 0; a < 3; ++a) {
+            const int b = m.binOf(c[a], a);
+            bins.bounds[a][b].grow(r.min, r.max);
+            ++bins.counts[a][b];
+        }
+    }
+}
+#endif
+
+enum class SplitKind { Leaf, Sah, Median };
+struct Split {
+    SplitKind kind = SplitKind::Leaf;
+    int axis = 0;
+    int bin = 0;  // SAH: bins [0, bin) go left
+};
+
+class Builder {
+public:
+    Builder(std::vector<PrimRef>& refs, const BvhBuildOptions& options, unsigned threads)
+        : refs_(refs), options_(options), threads_(threads) {
+        // Independent of the thread count, so the layout is too; ~64-128 tasks balance well up to 16+ threads.
+        taskThreshold_ = std::max<uint32_t>(4096, (uint32_t)(refs.size() / 64));
+    }
+
+    void buildTop(std::vector<BvhNode>& out, uint32_t nodeIndex, const Range& r, std::vector<Range>& tasks,
+                  std::vector<uint32_t>& taskSlots) {
+        if (r.count() <= taskThreshold_) {
+            tasks.push_back(r);
+            taskSlots.push_back(nodeIndex);
+            return;
+        }
+        Range left, right;
+        if (!splitNode(out, nodeIndex, r, true, left, right)) return;
+        const uint32_t child = out[nodeIndex].firstOrChild;
+        buildTop(out, child, left, tasks, taskSlots);
+        buildTop(out, child + 1, right, tasks, taskSlots);
+    }
+
+    void buildSubtree(std::vector<BvhNode>& out, uint32_t nodeIndex, const Range& r) {
+        Range left, right;
+        if (!splitNode(out, nodeIndex, r, false, left, right)) return;
+        const uint32_t child = out[nodeIndex].firstOrChild;
+        buildSubtree(out, child, left);
+        buildSubtree(out, child + 1, right);
+    }
+
+private:
+    // Writes out[nodeIndex] as a leaf (returns false) or as an interior node with two fresh children
+    // appended to `out` (returns true, with the children's ranges).
+    bool splitNode(std::vector<BvhNode>& out, uint32_t nodeIndex, const Range& r, bool parallel, Range& left,
+                   Range& right) {
+        const Split split = chooseSplit(r, parallel);
+        if (split.kind == SplitKind::Leaf) {
+            out[nodeIndex] = BvhNode{r.bounds.min, r.begin, r.bounds.max, r.count()};
+            return false;
+        }
+        if (split.kind == SplitKind::Sah) partitionSah(r, split, left, right);
+        else partitionMedian(r, left, right);
+        const uint32_t child = (uint32_t)out.size();
+        out.resize(out.size() + 2);
+        out[nodeIndex] = BvhNode{r.bounds.min, child, r.bounds.max, 0};
+        return true;
+    }
+
+    BinMapping mappingFor(const Range& r) const {
+        BinMapping m;
+        m.origin = r.centroids.min;
+        // Fewer bins than primitives buys nothing: small nodes bin faster.
+        m.binCount = std::min(options_.binCount, std::max(4u, r.count()));
+        const Vec3 e = r.centroids.extent();
+        for (int a = 0; a < 3; ++a)  // the (1 − ε) keeps the largest centroid inside the last bin
+            m.scale[a] = e[a] > 0.0f ? (float)m.binCount * (1.0f - 1e-6f) / e[a] : 0.0f;
+        return m;
+    }
+
+    void binRange(const Range& r, const BinMapping& m, bool parallel, BinSet& bins) const {
+        const unsigned parts = parallel && r.count() >= 32768 ? threads_ : 1;
+        if (parts <= 1) {
+            binPrimitives(refs_.data() + r.begin, r.count(), m, bins);
+            return;
+        }
+        std::vector<BinSet> partial(parts, BinSet(m.binCount));
+        std::vector<std::thread> workers;
+        const uint32_t chunk = (r.count() + parts - 1) / parts;
+        for (unsigned p = 0; p < parts; ++p) {
+            const uint32_t b = r.begin + std::min(r.count(), p * chunk), e = r.begin + std::min(r.count(), (p + 1) * chunk);
+            auto work = [&, p, b, e] { binPrimitives(refs_.data() + b, e - b, m, partial[p]); };
+            if (p + 1 < parts) workers.emplace_back(work);
+            else work();
+        }
+        for (std::thread& t : workers) t.join();
+        // Min/max and integer sums: the merged bins are exact whatever the chunking.
+        for (const BinSet& s : partial)
+            for (int a = 0; a < 3; ++a)
+                for (uint32_t b = 0; b < m.binCount; ++b) {
+                    bins.bounds[a][b].grow(Vec3(s.bounds[a][b].lo[0], s.bounds[a][b].lo[1], s.bounds[a][b].lo[2]),
+                                           Vec3(s.bounds[a][b].hi[0], s.bounds[a][b].hi[1], s.bounds[a][b].hi[2]));
+                    bins.counts[a][b] += s.counts[a][b];
+                }
+    }
+
+    Split chooseSplit(const Range& r, bool parallel) const {
+        const uint32_t n = r.count();
+        const uint32_t remaining = kMaxBvhDepth - r.depth;
+        if (n == 1 || remaining == 0) return {};  // the depth rule below guarantees n ≤ maxLeafSize here
+        // Children must stay small enough to finish by median splits within the depth left.
+        const uint64_t childLimit =
+            remaining - 1 >= 32 ? UINT64_MAX : (uint64_t)options_.maxLeafSize << (remaining - 1);
+
+        Split best;
+        float bestCost = INFINITY;
+        uint32_t bestLeft = 0;
+        const BinMapping m = mappingFor(r);
+        if (m.scale.x > 0.0f || m.scale.y > 0.0f || m.scale.z > 0.0f) {
+            BinSet bins(m.binCount);
+            binRange(r, m, parallel, bins);
+            const uint32_t k = m.binCount;
+            for (int a = 0; a < 3; ++a) {
+                if (m.scale[a] == 0.0f) continue;
+                float rightArea[kMaxBvhBins];
+                uint32_t rightCount[kMaxBvhBins];
+                Aabb box;
+                uint32_t c = 0;
+                for (uint32_t b = k - 1; b > 0; --b) {
+                    growBox(box, bins.bounds[a][b].aabb());
+                    c += bins.counts[a][b];
+                    rightArea[b] = box.surfaceArea();
+                    rightCount[b] = c;
+                }
+                box = Aabb{};
+                c = 0;
+                for (uint32_t b = 1; b < k; ++b) {
+                    growBox(box, bins.bounds[a][b - 1].aabb());
+                    c += bins.counts[a][b - 1];
+                    if (c == 0 || rightCount[b] == 0) continue;
+                    const float cost = box.surfaceArea() * (float)c + rightArea[b] * (float)rightCount[b];
+                    if (cost < bestCost) {
+                        bestCost = cost;
+                        best = Split{SplitKind::Sah, a, (int)b};
+                        bestLeft = c;
+                    }
+                }
+            }
+        }
+        const bool haveSah = best.kind == SplitKind::Sah;
+        if (n <= options_.maxLeafSize) {
+            const float area = r.bounds.surfaceArea();
+            const float splitCost = haveSah && area > 0.0f
+                                        ? options_.traversalCost + options_.intersectionCost * bestCost / area
+                                        : INFINITY;
+            if (!haveSah || options_.intersectionCost * (float)n <= splitCost) return {};
+        }
+        if (haveSah && bestLeft <= childLimit && n - bestLeft <= childLimit) return best;
+        return Split{SplitKind::Median, 0, 0};
+    }
+
+    static void finishRange(Range& child, uint32_t begin, uint32_t end, uint32_t depth) {
+        child.begin = begin;
+        child.end = end;
+        child.depth = depth;
+    }
+
+    void partitionSah(const Range& r, const Split& s, Range& left, Range& right) {
+        const BinMapping m = mappingFor(r);
+        PrimRef* p = refs_.data();
+        uint32_t i = r.begin, j = r.end;
+        Aabb lb, lc, rb, rc;
+        auto goesLeft = [&](const PrimRef& ref) { return m.binOf(centroidOf(ref)[s.axis], s.axis) < s.bin; };
+        auto addLeft = [&](const PrimRef& ref) {
+            growBox(lb, ref.min, ref.max);
+            const Vec3 c = centroidOf(ref);
+            growBox(lc, c, c);
+        };
+        auto addRight = [&](const PrimRef& ref) {
+            growBox(rb, ref.min, ref.max);
+            const Vec3 c = centroidOf(ref);
+            growBox(rc, c, c);
+        };
+        for (;;) {
+            while (i < j && goesLeft(p[i])) addLeft(p[i++]);
+            while (i < j && !goesLeft(p[j - 1])) addRight(p[--j]);
+            if (i >= j) break;
+            std::swap(p[i], p[j - 1]);
+            addLeft(p[i++]);
+            addRight(p[--j]);
+        }
+        finishRange(left, r.begin, i, r.depth + 1);
+        finishRange(right, i, r.end, r.depth + 1);
+        left.bounds = lb, left.centroids = lc, right.bounds = rb, right.centroids = rc;
+    }
+
+    // Object median along the widest centroid axis; ties broken by original index so it is deterministic.
+    void partitionMedian(const Range& r, Range& left, Range& right) {
+        const Vec3 e = r.centroids.extent();
+        const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
+        const uint32_t mid = r.begin + r.count() / 2;
+        std::nth_element(refs_.begin() + r.begin, refs_.begin() + mid, refs_.begin() + r.end,
+                         [axis](const PrimRef& a, const PrimRef& b) {
+                             const float ca = a.min[axis] + a.max[axis], cb = b.min[axis] + b.max[axis];
+                             return ca < cb || (ca == cb && a.id < b.id);
+                         });
+        finishRange(left, r.begin, mid, r.depth + 1);
+        finishRange(right, mid, r.end, r.depth + 1);
+        for (Range* c : {&left, &right}) {
+            for (uint32_t i = c->begin; i < c->end; ++i) {
+                growBox(c->bounds, refs_[i].min, refs_[i].max);
+                const Vec3 cc = centroidOf(refs_[i]);
+                growBox(c->centroids, cc, cc);
+            }
+        }
+    }
+
+    std::vector<PrimRef>& refs_;
+    const BvhBuildOptions& options_;
+    unsigned threads_;
+    uint32_t taskThreshold_;
+};
+
+}  // namespace
+
+Bvh buildBvh(const std::vector<Aabb>& primitiveBounds, const BvhBuildOptions& optionsIn) {
+    Bvh bvh;
+    const uint32_t n = (uint32_t)primitiveBounds.size();
+    if (n == 0) return bvh;
+    BvhBuildOptions options = optionsIn;
+    options.maxLeafSize = std::max(1u, options.maxLeafSize);
+    options.binCount = std::clamp(options.binCount, 2u, kMaxBvhBins);
+    const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+
+    std::vector<PrimRef> refs(n);
+    Range root;
+    root.end = n;
+    for (uint32_t i = 0; i < n; ++i) {
+        const Aabb& b = primitiveBounds[i];
+        refs[i] = PrimRef{b.min, i, b.max, 0};
+        growBox(root.bounds, b.min, b.max);
+        const Vec3 c = centroidOf(refs[i]);
+        growBox(root.centroids, c, c);
+    }
+
+    Builder builder(refs, options, threads);
+    std::vector<BvhNode> top(1);
+    std::vector<Range> tasks;
+    std::vector<uint32_t> taskSlots;
+    builder.buildTop(top, 0, root, tasks, taskSlots);
+
+    // Largest tasks first so the last ones to finish are small.
+    std::vector<uint32_t> schedule(tasks.size());
+    for (uint32_t i = 0; i < schedule.size(); ++i) schedule[i] = i;
+    std::stable_sort(schedule.begin(), schedule.end(),
+                     [&](uint32_t a, uint32_t b) { return tasks[a].count() > tasks[b].count(); });
+    std::vector<std::vector<BvhNode>> subtrees(tasks.size());
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+        for (size_t k; (k = next.fetch_add(1)) < schedule.size();) {
+            const uint32_t t = schedule[k];
+            subtrees[t].resize(1);
+            subtrees[t].reserve(2 * tasks[t].count());
+            builder.buildSubtree(subtrees[t], 0, tasks[t]);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned i = 1; i < std::min<size_t>(threads, tasks.size()); ++i) pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool) t.join();
+
+    // Subtree t's local node k ≥ 1 lands at base + k − 1; its root (local 0) replaces its slot in `top`.
+    size_t total = top.size();
+    for (const auto& s : subtrees) total += s.size() - 1;
+    bvh.nodes = std::move(top);
+    bvh.nodes.reserve(total);
+    for (size_t t = 0; t < subtrees.size(); ++t) {
+        const uint32_t base = (uint32_t)bvh.nodes.size();
+        auto relocate = [base](BvhNode node) {
+            if (node.primCount == 0) node.firstOrChild += base - 1;
+            return node;
+        };
+        const std::vector<BvhNode>& s = subtrees[t];
+        bvh.nodes[taskSlots[t]] = relocate(s[0]);
+        for (size_t k = 1; k < s.size(); ++k) bvh.nodes.push_back(relocate(s[k]));
+    }
+
+    bvh.primitiveOrder.resize(n);
+    for (uint32_t i = 0; i < n; ++i) bvh.primitiveOrder[i] = refs[i].id;
+    return bvh;
+}
+
+float bvhSahCost(const Bvh& bvh, const BvhBuildOptions& options) {
+    if (bvh.nodes.empty()) return 0.0f;
+    auto area = [](const BvhNode& node) {
+        Aabb b;
+        b.min = node.boundsMin;
+        b.max = node.boundsMax;
+        return (double)b.surfaceArea();
+    };
+    const double rootArea = area(bvh.nodes[0]);
+    double cost = 0.0;
+    for (const BvhNode& node : bvh.nodes)
+        cost += area(node) * (node.primCount == 0 ? options.traversalCost : options.intersectionCost * node.primCount);
+    return rootArea > 0.0 ? (float)(cost / rootArea) : 0.0f;
+}
+
+uint32_t bvhDepth(const Bvh& bvh) {
+    if (bvh.nodes.empty()) return 0;
+    uint32_t deepest = 0;
+    std::vector<std::pair<uint32_t, uint32_t>> stack{{0, 0}};
+    while (!stack.empty()) {
+        const auto [index, depth] = stack.back();
+        stack.pop_back();
+        const BvhNode& node = bvh.nodes[index];
+        if (node.primCount != 0) {
+            deepest = std::max(deepest, depth);
+        } else {
+            stack.push_back({node.firstOrChild, depth + 1});
+            stack.push_back({node.firstOrChild + 1, depth + 1});
+        }
+    }
+    return deepest;
+}
+
+}  // namespace trazo

@@ -1,0 +1,39 @@
+// BVH builder (host): binned surface-area-heuristic splits over primitive bounds, parallel on the CPU.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "accel/aabb.h"
+#include "accel/bvh_node.h"
+
+namespace trazo {
+
+struct BvhBuildOptions {
+    uint32_t maxLeafSize = 4;  // a hard cap: a larger node is always split
+    uint32_t binCount = 16;    // centroid bins per axis, 2..kMaxBvhBins
+    unsigned threads = 0;      // 0 = all cores
+    // SAH: cost(node) = traversalCost + intersectionCost · Σ A(child)/A(node) · count(child); leaf = intersectionCost · count.
+    float traversalCost = 1.0f;
+    float intersectionCost = 1.0f;
+};
+
+constexpr uint32_t kMaxBvhBins = 64;
+
+struct Bvh {
+    std::vector<BvhNode> nodes;               // nodes[0] is the root; empty for zero primitives
+    std::vector<uint32_t> primitiveOrder;     // reordered position i holds original primitive primitiveOrder[i]
+};
+
+// Leaves hold ≤ maxLeafSize primitives and sit at depth ≤ kMaxBvhDepth: where SAH would go deeper, or no
+// SAH split exists (all centroids equal), the node is split at the median instead. Deterministic: the
+// same input and options give the same nodes whatever the thread count.
+Bvh buildBvh(const std::vector<Aabb>& primitiveBounds, const BvhBuildOptions& options = {});
+
+// The SAH cost of a built tree relative to its root's area (the figure the builder minimises greedily).
+float bvhSahCost(const Bvh& bvh, const BvhBuildOptions& options = {});
+
+// Depth of the deepest leaf (root = 0); 0 for an empty BVH.
+uint32_t bvhDepth(const Bvh& bvh);
+
+}  // namespace trazo

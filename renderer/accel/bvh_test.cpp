@@ -1,0 +1,381 @@
+// Tests of the BVH: structure invariants, depth limits, determinism, traversal against brute force, and a
+// closed sphere that no ray may pass through.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <thread>
+#include <vector>
+
+#include "accel/bvh_build.h"
+#include "accel/bvh_traverse.h"
+#include "core/rng.h"
+#include "geometry/intersect_triangle.h"
+#include "geometry/tessellate.h"
+
+namespace trazo {
+namespace {
+
+struct Random {
+    uint32_t key, n = 0;
+    explicit Random(uint32_t seed) : key(hashU32(seed)) {}
+    float operator()(float lo, float hi) { return lo + (hi - lo) * bitsToUnitFloat(hashCombine(key, n++)); }
+    Vec3 point(float s) { return {(*this)(-s, s), (*this)(-s, s), (*this)(-s, s)}; }
+    Vec3 direction() {
+        for (;;) {
+            const Vec3 p = point(1.0f);
+            if (lengthSquared(p) > 1e-4f && lengthSquared(p) <= 1.0f) return normalize(p);
+        }
+    }
+};
+
+std::vector<Aabb> boundsOf(const std::vector<Vec3>& tris) {
+    std::vector<Aabb> bounds(tris.size() / 3);
+    for (size_t i = 0; i < bounds.size(); ++i) bounds[i] = triangleBounds(tris[3 * i], tris[3 * i + 1], tris[3 * i + 2]);
+    return bounds;
+}
+
+// A triangle list with its BVH and the triangles in BVH order, as the renderer will hold them.
+struct TriangleBvh {
+    std::vector<Vec3> tris;
+    Bvh bvh;
+    std::vector<Vec3> ordered;
+
+    explicit TriangleBvh(std::vector<Vec3> t, BvhBuildOptions options = {}) : tris(std::move(t)) {
+        bvh = buildBvh(boundsOf(tris), options);
+        for (uint32_t id : bvh.primitiveOrder)
+            ordered.insert(ordered.end(), {tris[3 * id], tris[3 * id + 1], tris[3 * id + 2]});
+    }
+
+    // Closest hit; `index` is the original triangle index.
+    bool closest(const Ray& ray, float tMin, float& tMax, uint32_t& index, TriangleHit& hit) const {
+        const TriangleRay tr = makeTriangleRay(ray);
+        const Vec3* p = ordered.data();
+        uint32_t found = 0;
+        const bool any = traverseClosest(bvh.nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float& t) {
+            bool h = false;
+            for (uint32_t i = first; i < first + count; ++i) {
+                TriangleHit th;
+                if (intersectTriangle(tr, p[3 * i], p[3 * i + 1], p[3 * i + 2], tMin, t, th)) {
+                    t = th.t;
+                    hit = th;
+                    found = i;
+                    h = true;
+                }
+            }
+            return h;
+        });
+        if (any) index = bvh.primitiveOrder[found];
+        return any;
+    }
+
+    bool occluded(const Ray& ray, float tMin, float tMax) const {
+        const TriangleRay tr = makeTriangleRay(ray);
+        const Vec3* p = ordered.data();
+        return traverseAny(bvh.nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float t) {
+            for (uint32_t i = first; i < first + count; ++i) {
+                TriangleHit th;
+                if (intersectTriangle(tr, p[3 * i], p[3 * i + 1], p[3 * i + 2], tMin, t, th)) return true;
+            }
+            return false;
+        });
+    }
+};
+
+bool bruteClosest(const std::vector<Vec3>& tris, const Ray& ray, float tMin, float& tMax, uint32_t& index,
+                  TriangleHit& hit) {
+    const TriangleRay tr = makeTriangleRay(ray);
+    bool any = false;
+    for (uint32_t i = 0; 3 * i < tris.size(); ++i) {
+        TriangleHit th;
+        if (intersectTriangle(tr, tris[3 * i], tris[3 * i + 1], tris[3 * i + 2], tMin, tMax, th)) {
+            tMax = th.t;
+            hit = th;
+            index = i;
+            any = true;
+        }
+    }
+    return any;
+}
+
+// Checks every invariant the traversal and the renderer rely on; returns the leaf count.
+void expectValidStructure(const Bvh& bvh, const std::vector<Aabb>& bounds, uint32_t maxLeafSize) {
+    const size_t n = bounds.size();
+    ASSERT_EQ(bvh.primitiveOrder.size(), n);
+    std::vector<uint32_t> sorted = bvh.primitiveOrder;
+    std::sort(sorted.begin(), sorted.end());
+    for (size_t i = 0; i < n; ++i) ASSERT_EQ(sorted[i], i) << "primitiveOrder is not a permutation";
+    if (n == 0) {
+        EXPECT_TRUE(bvh.nodes.empty());
+        return;
+    }
+    ASSERT_FALSE(bvh.nodes.empty());
+    // Walk from the root carrying the ancestors' boxes; each primitive must fit in every one of them.
+    struct Item { uint32_t node, depth; };
+    std::vector<Item> stack{{0, 0}};
+    std::vector<uint32_t> covered(n, 0);
+    std::vector<uint32_t> visits(bvh.nodes.size(), 0);
+    std::vector<Aabb> path(kMaxBvhDepth + 2);
+    auto toAabb = [](const BvhNode& node) { Aabb b; b.min = node.boundsMin; b.max = node.boundsMax; return b; };
+    while (!stack.empty()) {
+        const Item it = stack.back();
+        stack.pop_back();
+        ASSERT_LT(it.node, bvh.nodes.size());
+        ASSERT_LE(it.depth, kMaxBvhDepth);
+        ++visits[it.node];
+        const BvhNode& node = bvh.nodes[it.node];
+        path[it.depth] = toAabb(node);
+        if (node.primCount == 0) {
+            ASSERT_GE(node.firstOrChild, 1u);
+            ASSERT_LT(node.firstOrChild + 1, bvh.nodes.size());
+            for (uint32_t c = node.firstOrChild; c < node.firstOrChild + 2; ++c)
+                EXPECT_TRUE(toAabb(node).contains(toAabb(bvh.nodes[c])));
+            stack.push_back({node.firstOrChild, it.depth + 1});
+            stack.push_back({node.firstOrChild + 1, it.depth + 1});
+            continue;
+        }
+        EXPECT_LE(node.primCount, maxLeafSize);
+        ASSERT_LE((size_t)node.firstOrChild + node.primCount, n);
+        for (uint32_t i = node.firstOrChild; i < node.firstOrChild + node.primCount; ++i) {
+            ++covered[i];
+            const Aabb& prim = bounds[bvh.primitiveOrder[i]];
+            for (uint32_t d = 0; d <= it.depth; ++d)
+                ASSERT_TRUE(path[d].contains(prim)) << "primitive " << bvh.primitiveOrder[i] << " outside depth " << d;
+        }
+    }
+    for (size_t i = 0; i < n; ++i) ASSERT_EQ(covered[i], 1u) << "position " << i << " not in exactly one leaf";
+    for (size_t i = 0; i < visits.size(); ++i) ASSERT_EQ(visits[i], 1u) << "node " << i << " unreachable or shared";
+}
+
+std::vector<Vec3> concat(std::vector<Vec3> a, const std::vector<Vec3>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+// Triangles of `count` random axis-aligned cubes: many faces share planes with node bounds.
+std::vector<Vec3> cubes(uint32_t count, uint32_t seed) {
+    Random u(seed);
+    std::vector<Vec3> tris;
+    for (uint32_t k = 0; k < count; ++k) {
+        const Vec3 lo(std::round(u(-8, 8)), std::round(u(-8, 8)), std::round(u(-8, 8)));
+        const Vec3 hi = lo + Vec3(std::round(u(1, 3)), std::round(u(1, 3)), std::round(u(1, 3)));
+        auto corner = [&](int i) { return Vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z); };
+        const int faces[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+        for (const auto& f : faces)
+            tris.insert(tris.end(), {corner(f[0]), corner(f[1]), corner(f[2]), corner(f[0]), corner(f[2]), corner(f[3])});
+    }
+    return tris;
+}
+
+TEST(BvhBuild, ZeroAndOnePrimitive) {
+    const Bvh empty = buildBvh({});
+    EXPECT_TRUE(empty.nodes.empty());
+    EXPECT_TRUE(empty.primitiveOrder.empty());
+
+    const TriangleBvh one({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    ASSERT_EQ(one.bvh.nodes.size(), 1u);
+    EXPECT_EQ(one.bvh.nodes[0].primCount, 1u);
+    EXPECT_EQ(one.bvh.nodes[0].firstOrChild, 0u);
+    EXPECT_EQ(one.bvh.primitiveOrder, std::vector<uint32_t>{0});
+    float tMax = INFINITY;
+    uint32_t index = 99;
+    TriangleHit hit;
+    ASSERT_TRUE(one.closest({{0.25f, 0.25f, 2}, {0, 0, -1}}, 0.0f, tMax, index, hit));
+    EXPECT_EQ(tMax, 2.0f);
+    EXPECT_EQ(index, 0u);
+    EXPECT_TRUE(one.occluded({{0.25f, 0.25f, 2}, {0, 0, -1}}, 0.0f, INFINITY));
+    EXPECT_FALSE(one.occluded({{0.25f, 0.25f, 2}, {0, 0, -1}}, 0.0f, 2.0f));
+    EXPECT_FALSE(one.occluded({{0.75f, 0.75f, 2}, {0, 0, -1}}, 0.0f, INFINITY));
+}
+
+TEST(BvhBuild, StructureIsValidOnVariedMeshes) {
+    const std::vector<std::vector<Vec3>> meshes = {
+        randomTriangleSoup(3000, 1), tessellateSphere({0, 0, 0}, 1.0f, 40, 80), degenerateTriangles(2000, 2),
+        cubes(300, 3), concat(tessellateSphere({1, 2, 3}, 0.5f, 16, 32, 0.2f), randomTriangleSoup(100, 4, 5.0f))};
+    for (uint32_t leaf : {1u, 4u, 8u}) {
+        for (const auto& mesh : meshes) {
+            BvhBuildOptions options;
+            options.maxLeafSize = leaf;
+            const std::vector<Aabb> bounds = boundsOf(mesh);
+            const Bvh bvh = buildBvh(bounds, options);
+            expectValidStructure(bvh, bounds, leaf);
+            EXPECT_LE(bvhDepth(bvh), kMaxBvhDepth);
+        }
+    }
+}
+
+TEST(BvhBuild, IdenticalTrianglesGiveABalancedTree) {
+    std::vector<Vec3> tris;
+    for (int i = 0; i < 10000; ++i) tris.insert(tris.end(), {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+    const std::vector<Aabb> bounds = boundsOf(tris);
+    const Bvh bvh = buildBvh(bounds);
+    expectValidStructure(bvh, bounds, 4);
+    // No SAH split exists, so every split is a median: ceil(log2(10000 / 4)) levels.
+    EXPECT_LE(bvhDepth(bvh), 12u);
+}
+
+// 480 clusters at x = 1.2^i with 2 bins: the upper bin holds only the farthest few clusters, so SAH alone
+// peels them off a few per level (depth > 100); the depth rule must switch to medians in time.
+TEST(BvhBuild, ExponentialSpacingStaysWithinMaxDepth) {
+    std::vector<Aabb> bounds;
+    for (int i = 0; i < 480; ++i)
+        for (int k = 0; k < 2; ++k) {
+            Aabb b;
+            const float x = std::pow(1.2f, (float)i);
+            b.grow(Vec3(x, 0, 0));
+            b.grow(Vec3(x * 1.0001f, 0.5f, 1));
+            bounds.push_back(b);
+        }
+    BvhBuildOptions options;
+    options.binCount = 2;
+    const Bvh bvh = buildBvh(bounds, options);
+    expectValidStructure(bvh, bounds, 4);
+    EXPECT_LE(bvhDepth(bvh), kMaxBvhDepth);
+    EXPECT_GT(bvhDepth(bvh), 40u) << "input no longer pathological: the test checks nothing";
+}
+
+TEST(BvhBuild, SameTreeWhateverTheThreadCount) {
+    const std::vector<Aabb> bounds = boundsOf(randomTriangleSoup(60000, 5));
+    BvhBuildOptions options;
+    options.threads = 1;
+    const Bvh one = buildBvh(bounds, options);
+    for (unsigned threads : {2u, 3u}) {
+        options.threads = threads;
+        const Bvh many = buildBvh(bounds, options);
+        ASSERT_EQ(one.nodes.size(), many.nodes.size());
+        EXPECT_EQ(0, std::memcmp(one.nodes.data(), many.nodes.data(), one.nodes.size() * sizeof(BvhNode)));
+        EXPECT_EQ(one.primitiveOrder, many.primitiveOrder);
+    }
+    expectValidStructure(one, bounds, 4);
+}
+
+// Nearest hits agree with testing every triangle (bitwise distance; the same triangle unless two tie), and
+// any-hit agrees with the nearest hit and with the tMax bound.
+void expectMatchesBruteForce(const TriangleBvh& scene, const std::vector<Ray>& rays) {
+    int hits = 0;
+    for (size_t r = 0; r < rays.size(); ++r) {
+        const Ray& ray = rays[r];
+        float tBvh = INFINITY, tBrute = INFINITY;
+        uint32_t iBvh = 0, iBrute = 0;
+        TriangleHit hBvh{}, hBrute{};
+        const bool bvhHit = scene.closest(ray, 0.0f, tBvh, iBvh, hBvh);
+        const bool bruteHit = bruteClosest(scene.tris, ray, 0.0f, tBrute, iBrute, hBrute);
+        ASSERT_EQ(bvhHit, bruteHit) << "ray " << r;
+        ASSERT_EQ(scene.occluded(ray, 0.0f, INFINITY), bruteHit) << "ray " << r;
+        if (!bruteHit) continue;
+        ++hits;
+        ASSERT_EQ(tBvh, tBrute) << "ray " << r;
+        if (iBvh == iBrute) {
+            EXPECT_EQ(hBvh.b1, hBrute.b1);
+            EXPECT_EQ(hBvh.b2, hBrute.b2);
+        }
+        // Nothing strictly closer than the nearest hit; the nearest itself once tMax passes it.
+        ASSERT_FALSE(scene.occluded(ray, 0.0f, tBrute)) << "ray " << r;
+        ASSERT_TRUE(scene.occluded(ray, 0.0f, std::nextafter(tBrute, INFINITY))) << "ray " << r;
+        // A tMin past the nearest hit finds the next one, as brute force does.
+        float tNextBvh = INFINITY, tNextBrute = INFINITY;
+        const bool nextBvh = scene.closest(ray, tBrute, tNextBvh, iBvh, hBvh);
+        ASSERT_EQ(nextBvh, bruteClosest(scene.tris, ray, tBrute, tNextBrute, iBrute, hBrute)) << "ray " << r;
+        if (nextBvh) ASSERT_EQ(tNextBvh, tNextBrute) << "ray " << r;
+    }
+    EXPECT_GT(hits, (int)rays.size() / 10) << "too few hits to test anything";
+}
+
+std::vector<Ray> randomRays(uint32_t count, uint32_t seed, float originSpread, float targetSpread) {
+    Random u(seed);
+    std::vector<Ray> rays;
+    for (uint32_t i = 0; i < count; ++i) {
+        const Vec3 origin = u.point(originSpread);
+        // Half aimed at the mesh, half in any direction (from inside, these hit too).
+        rays.push_back({origin, i % 2 ? u.point(targetSpread) - origin : u.direction()});
+    }
+    return rays;
+}
+
+TEST(BvhTraverse, ClosestMatchesBruteForceOnSoups) {
+    for (uint32_t leaf : {1u, 4u}) {
+        BvhBuildOptions options;
+        options.maxLeafSize = leaf;
+        expectMatchesBruteForce(TriangleBvh(randomTriangleSoup(2000, 10), options), randomRays(1500, 11, 2.0f, 1.0f));
+        expectMatchesBruteForce(TriangleBvh(concat(randomTriangleSoup(500, 12, 0.3f), randomTriangleSoup(50, 13, 4.0f)), options),
+                                randomRays(1500, 14, 3.0f, 0.5f));
+    }
+}
+
+TEST(BvhTraverse, ClosestMatchesBruteForceOnDegenerateAndSliverTriangles) {
+    expectMatchesBruteForce(TriangleBvh(concat(degenerateTriangles(3000, 20), randomTriangleSoup(200, 21))),
+                            randomRays(2000, 22, 2.0f, 1.0f));
+}
+
+TEST(BvhTraverse, ClosestMatchesBruteForceOnSpheres) {
+    expectMatchesBruteForce(TriangleBvh(tessellateSphere({0.1f, -0.2f, 0.3f}, 1.0f, 32, 64)), randomRays(2000, 30, 2.0f, 1.0f));
+    expectMatchesBruteForce(TriangleBvh(tessellateSphere({0, 0, 0}, 1.0f, 24, 48, 0.3f)), randomRays(2000, 31, 0.5f, 1.0f));
+}
+
+// Rays along the axes, starting on the cubes' face planes: zero direction components with origins on the
+// node slabs (NaN in the slab test) must keep the node, since the brute force finds hits on the edges.
+TEST(BvhTraverse, AxisAlignedRaysOnSlabPlanesMatchBruteForce) {
+    const std::vector<Vec3> tris = cubes(200, 40);
+    const TriangleBvh scene(tris);
+    Random u(41);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 3000; ++i) {
+        // Along one axis, the other two coordinates on a random cube's face planes (or inside it).
+        const uint32_t cube = (uint32_t)u(0.0f, 199.99f);
+        const Vec3 lo = tris[36 * cube], hi = tris[36 * cube + 3 * 2 + 2];  // corners 0 and 7 (see cubes())
+        const int axis = i % 3;
+        Vec3 origin, direction(0, 0, 0);
+        origin[axis] = u(0.0f, 1.0f) < 0.5f ? -12.0f : 12.0f;
+        direction[axis] = origin[axis] < 0.0f ? 1.0f : -1.0f;
+        for (int k = 1; k < 3; ++k) {
+            const int c = (axis + k) % 3;
+            const float pick = u(0.0f, 3.0f);
+            origin[c] = pick < 1.0f ? lo[c] : (pick < 2.0f ? hi[c] : u(lo[c], hi[c]));
+        }
+        rays.push_back({origin, direction});
+    }
+    expectMatchesBruteForce(scene, rays);
+}
+
+// 1,000,000 rays from outside a closed tessellated sphere towards points inside it: each must hit, and be
+// blocked before reaching its target. Rays aimed at the mesh's vertices stress the shared edges.
+TEST(BvhWatertight, ClosedSphereLetsNoRayThrough) {
+    const TriangleBvh sphere(tessellateSphere({0.3f, -0.1f, 0.2f}, 1.0f, 48, 96));
+    const Vec3 center(0.3f, -0.1f, 0.2f);
+    constexpr uint32_t kRays = 1000000;
+    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    std::atomic<uint32_t> leaks{0}, unblocked{0};
+    auto work = [&](unsigned part) {
+        uint32_t localLeaks = 0, localUnblocked = 0;
+        Random u(1000 + part);
+        for (uint32_t i = part; i < kRays; i += threads) {
+            Vec3 origin = center + u.direction() * u(1.5f, 4.0f), target = center + u.direction() * u(0.0f, 0.9f);
+            if (i % 2) {
+                // Through a mesh vertex (where 6 triangles meet, or a pole's fan) from within 45° of its
+                // normal, so the ray enters the solid there: only a crack could let it through.
+                target = sphere.tris[hashU32(i) % sphere.tris.size()];
+                origin = target + normalize(normalize(target - center) + u.direction() * 0.7f) * u(0.5f, 3.0f);
+            }
+            const Ray ray{origin, target - origin};
+            float tMax = INFINITY;
+            uint32_t index;
+            TriangleHit hit;
+            localLeaks += !sphere.closest(ray, 0.0f, tMax, index, hit);
+            // Aimed strictly inside, the surface lies before t = 1.
+            if (i % 2 == 0) localUnblocked += !sphere.occluded(ray, 0.0f, 1.0f);
+        }
+        leaks += localLeaks;
+        unblocked += localUnblocked;
+    };
+    std::vector<std::thread> pool;
+    for (unsigned p = 1; p < threads; ++p) pool.emplace_back(work, p);
+    work(0);
+    for (std::thread& t : pool) t.join();
+    EXPECT_EQ(leaks.load(), 0u);
+    EXPECT_EQ(unblocked.load(), 0u);
+}
+
+}  // namespace
+}  // namespace trazo

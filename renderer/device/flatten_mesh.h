@@ -1,0 +1,30 @@
+// Meshes for the device scene: the OBJ data of one Mesh block in world space, with normals (given ones by
+// the inverse transpose, missing ones computed) and Lengyel tangents, then its BVH appended to the arrays.
+#pragma once
+
+#include <vector>
+
+#include "core/affine.h"
+#include "device/scene_arrays.h"
+#include "scene/scene.h"
+
+namespace trazo {
+
+struct PreparedMesh {
+    std::vector<MeshTriangle> triangles;  // world space, in file order
+    std::vector<TriangleCorners> corners;
+    bool hasUvs = false;
+};
+
+// Positions go through worldFromObject; given normals through its inverse transpose. A corner without a
+// normal gets the angle-weighted mean of the face normals around its position (smooth shading; OBJ
+// smoothing groups are not read). Tangents: Lengyel's per-triangle dp/du, summed over the triangles that
+// share a corner's (position, normal, uv), made orthogonal to the normal; with no usable uvs, any unit
+// vector orthogonal to the normal.
+PreparedMesh prepareMesh(const MeshData& data, const Affine3& worldFromObject);
+
+// Builds the mesh's BVH and appends its nodes, triangles (in BVH order) and a MeshShape; returns the
+// MeshShape's index in out.meshes.
+uint32_t appendMesh(const PreparedMesh& mesh, SceneArrays& out);
+
+}  // namespace trazo

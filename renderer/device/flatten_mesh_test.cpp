@@ -1,0 +1,125 @@
+// Mesh preparation: transforms (positions, normals by the inverse transpose), computed normals, Lengyel
+// tangents and their handedness, and the BVH order of what appendMesh uploads.
+#include "device/flatten_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include "geometry/tessellate.h"
+
+namespace trazo {
+namespace {
+
+// Triangle-list positions → MeshData with shared position indices (so computed normals can smooth).
+MeshData indexedMesh(const std::vector<Vec3>& triangleList) {
+    MeshData m;
+    for (const Vec3& p : triangleList) {
+        int32_t index = -1;
+        for (size_t i = 0; i < m.positions.size() && index < 0; ++i)
+            if (m.positions[i].x == p.x && m.positions[i].y == p.y && m.positions[i].z == p.z) index = (int32_t)i;
+        if (index < 0) {
+            index = (int32_t)m.positions.size();
+            m.positions.push_back(p);
+        }
+        m.corners.push_back({index, -1, -1});
+    }
+    return m;
+}
+
+// A unit quad in the XY plane, two triangles, with uvs (optionally mirrored in u) and a +Z normal.
+MeshData quad(bool mirrorU) {
+    MeshData m;
+    m.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+    const float u1 = mirrorU ? 0.0f : 1.0f, u0 = 1.0f - u1;
+    m.uvs = {u0, 0, u1, 0, u1, 1, u0, 1};
+    m.normals = {Vec3(0, 0, 1)};
+    for (int32_t i : {0, 1, 2, 0, 2, 3}) m.corners.push_back({i, 0, i});
+    m.hasNormals = m.hasUvs = true;
+    return m;
+}
+
+TEST(PrepareMesh, ComputedNormalsOfASphereAreRadial) {
+    const MeshData sphere = indexedMesh(tessellateSphere(Vec3(0), 1.0f, 24, 48));
+    const PreparedMesh mesh = prepareMesh(sphere, Affine3{});
+    float worst = 1.0f;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const Vec3 p[3] = {mesh.triangles[t].p0, mesh.triangles[t].p1, mesh.triangles[t].p2};
+        for (int k = 0; k < 3; ++k) worst = std::min(worst, dot(mesh.corners[t].corner[k].normal, normalize(p[k])));
+    }
+    EXPECT_GT(worst, 0.9995f);  // within 1.8° of the true normal everywhere, poles included
+}
+
+// Scaling by (2, 1, 1) then rotating: a normal (1, 1, 0)/√2 must become M⁻ᵀ n, not M n.
+TEST(PrepareMesh, GivenNormalsGoThroughTheInverseTranspose) {
+    MeshData m = quad(false);
+    m.normals = {normalize(Vec3(1, 1, 0))};
+    const Affine3 world = then(makeScale(Vec3(2, 1, 1)), makeRotation(Vec3(0, 0, 1), 0.5f));
+    const PreparedMesh mesh = prepareMesh(m, world);
+    const Vec3 expected = normalize(makeRotation(Vec3(0, 0, 1), 0.5f).applyToVector(Vec3(0.5f, 1, 0)));
+    const Vec3 got = mesh.corners[0].corner[0].normal;
+    EXPECT_NEAR(got.x, expected.x, 1e-5f);
+    EXPECT_NEAR(got.y, expected.y, 1e-5f);
+    EXPECT_NEAR(got.z, expected.z, 1e-5f);
+    const Vec3 p2 = world.applyToPoint(Vec3(1, 1, 0));
+    EXPECT_NEAR(mesh.triangles[0].p2.x, p2.x, 1e-6f);
+    EXPECT_NEAR(mesh.triangles[0].p2.y, p2.y, 1e-6f);
+}
+
+TEST(PrepareMesh, LengyelTangentFollowsUAndHandednessFollowsMirroring) {
+    for (bool mirror : {false, true}) {
+        const Affine3 world = makeRotation(normalize(Vec3(1, 2, 3)), 0.8f);
+        const PreparedMesh mesh = prepareMesh(quad(mirror), world);
+        const Vec3 uDirection = world.applyToVector(Vec3(mirror ? -1.0f : 1.0f, 0, 0));
+        const Vec3 vDirection = world.applyToVector(Vec3(0, 1, 0));
+        for (const TriangleCorners& tc : mesh.corners)
+            for (const MeshCorner& c : tc.corner) {
+                EXPECT_GT(dot(c.tangent, uDirection), 0.9999f) << "mirror " << mirror;
+                EXPECT_NEAR(dot(c.tangent, c.normal), 0.0f, 1e-6f);
+                // bitangent = sign · n × t must point along increasing v.
+                EXPECT_GT(dot(cross(c.normal, c.tangent) * c.tangentSign, vDirection), 0.9999f) << "mirror " << mirror;
+            }
+    }
+}
+
+TEST(PrepareMesh, DegenerateTrianglesAndMissingUvsStayFinite) {
+    const MeshData m = indexedMesh(degenerateTriangles(40, 3));
+    const PreparedMesh mesh = prepareMesh(m, Affine3{});
+    for (const TriangleCorners& tc : mesh.corners)
+        for (const MeshCorner& c : tc.corner) {
+            EXPECT_TRUE(isFinite(c.normal) && isFinite(c.tangent));
+            EXPECT_NEAR(length(c.normal), 1.0f, 1e-5f);
+            EXPECT_NEAR(length(c.tangent), 1.0f, 1e-5f);
+        }
+}
+
+TEST(AppendMesh, TrianglesGoInBvhLeafOrderAndEachLeafBoundsItsTriangles) {
+    const MeshData m = indexedMesh(randomTriangleSoup(300, 5));
+    SceneArrays arrays;
+    const uint32_t first = appendMesh(prepareMesh(m, Affine3{}), arrays);
+    const uint32_t second = appendMesh(prepareMesh(m, makeTranslation(Vec3(5, 0, 0))), arrays);
+    ASSERT_EQ(arrays.meshes.size(), 2u);
+    EXPECT_EQ(arrays.triangles.size(), 600u);
+    for (uint32_t meshIndex : {first, second}) {
+        const MeshShape& shape = arrays.meshes[meshIndex];
+        EXPECT_EQ(shape.triangleCount, 300u);
+        const BvhNode* nodes = arrays.meshNodes.data() + shape.nodeOffset;
+        const size_t nodeCount = (meshIndex == first ? arrays.meshes[second].nodeOffset : arrays.meshNodes.size()) -
+                                 shape.nodeOffset;
+        uint32_t covered = 0;
+        for (uint32_t n = 0; n < nodeCount; ++n) {
+            if (nodes[n].primCount == 0) continue;
+            for (uint32_t i = nodes[n].firstOrChild; i < nodes[n].firstOrChild + nodes[n].primCount; ++i) {
+                const MeshTriangle& t = arrays.triangles[shape.triangleOffset + i];
+                for (const Vec3 p : {t.p0, t.p1, t.p2})
+                    for (int a = 0; a < 3; ++a) {
+                        EXPECT_GE(p[a], nodes[n].boundsMin[a]);
+                        EXPECT_LE(p[a], nodes[n].boundsMax[a]);
+                    }
+                ++covered;
+            }
+        }
+        EXPECT_EQ(covered, 300u);
+    }
+}
+
+}  // namespace
+}  // namespace trazo
