@@ -8,6 +8,7 @@
 #include "device/flatten.h"
 #include "image/image_writer.h"
 #include "progress_bar.h"
+#include "render/error_estimate.h"
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
 #include "render_stats.h"
@@ -76,10 +77,21 @@ int runHeadlessRender(const CommandLine& options) {
         backend->resize(stats.width, stats.height);
         stats.uploadSeconds = secondsSince(t0);
 
-        const FrameParams frame = makeFrameParams(scene, stats.width, stats.height, options.seed);
+        const FrameParams frame =
+            makeFrameParams(scene, stats.width, stats.height, options.seed, options.fixedGrid);
         RenderLimits limits;
         limits.seconds = options.seconds;
-        limits.passes = options.spp ? *options.spp : (options.seconds > 0 ? (1u << 24) : stats.fullCycle);
+        limits.targetError = options.targetError;
+        limits.cyclePasses = cyclePassesFor(flat.arrays, options.fixedGrid);
+        if (options.targetError > 0 && !splitsHalves(limits.cyclePasses)) {
+            std::fprintf(stderr, "trazo: --target-error: this scene's strata do not repeat within %u passes, so "
+                                 "its error cannot be estimated; use --spp or --time\n", kMaxCyclePasses);
+            return 2;
+        }
+        // Default: one complete estimate (a full cycle; one pass of the fixed grid); bounded only by the
+        // time or the target error when either is given.
+        const bool openEnded = options.seconds > 0 || options.targetError > 0;
+        limits.passes = options.spp ? *options.spp : (openEnded ? kMaxProgressivePasses : limits.cyclePasses);
         ProgressBar bar(!options.quiet, options.seconds);
         const RenderOutcome outcome =
             renderProgressive(*backend, frame, limits, [&](const RenderProgress& p) { bar.update(p); });
@@ -87,9 +99,19 @@ int runHeadlessRender(const CommandLine& options) {
         stats.spp = outcome.passes;
         stats.renderSeconds = outcome.seconds;
         stats.rays = outcome.rays;
+        stats.fixedGrid = options.fixedGrid;
+        stats.targetError = options.targetError;
+        stats.reachedTarget = outcome.reachedTarget;
+
+        std::vector<AccumPixel> accum;
+        backend->readAccumulation(accum);
+        const ErrorEstimate estimate = estimateError(accum);
+        stats.estimatedRelError = estimate.relError;
+        stats.estimateBalanced =
+            estimate.available && splitsHalves(limits.cyclePasses) && outcome.passes % (2 * limits.cyclePasses) == 0;
 
         std::string error;
-        if (!writeImage(options.output, (int)stats.width, (int)stats.height, readImage(*backend), error)) {
+        if (!writeImage(options.output, (int)stats.width, (int)stats.height, resolveImage(accum), error)) {
             std::fprintf(stderr, "trazo: %s\n", error.c_str());
             return 1;
         }

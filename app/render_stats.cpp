@@ -2,6 +2,7 @@
 #include "render_stats.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -25,6 +26,7 @@ std::string jsonString(const std::string& s) {
 }
 
 std::string number(double v) {
+    if (!std::isfinite(v)) return "null";
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", v);
     return buf;
@@ -33,13 +35,27 @@ std::string number(double v) {
 }  // namespace
 
 std::string formatStatsSummary(const RenderStats& s) {
-    char buf[512];
+    char buf[768];
     std::snprintf(buf, sizeof buf,
                   "scene creation %.4f s, upload %.4f s, render %.4f s\n"
-                  "%u x %u, %u passes (full cycle %u), %llu rays, %.2f Mrays/s on %s (%s)\n",
+                  "%u x %u, %u passes (full cycle %u%s), %llu rays, %.2f Mrays/s on %s (%s)\n",
                   s.parseSeconds, s.uploadSeconds, s.renderSeconds, s.width, s.height, s.spp, s.fullCycle,
-                  (unsigned long long)s.rays, s.mraysPerSecond(), s.backend.c_str(), s.device.c_str());
-    return buf;
+                  s.fixedGrid ? "; fixed grid: every pass complete" : "", (unsigned long long)s.rays,
+                  s.mraysPerSecond(), s.backend.c_str(), s.device.c_str());
+    std::string out = buf;
+    if (std::isfinite(s.estimatedRelError)) {
+        std::snprintf(buf, sizeof buf, "estimated relative error %.3g%%%s", 100.0 * s.estimatedRelError,
+                      s.estimateBalanced ? "" : " (rough: passes not a multiple of 2 cycles)");
+    } else {
+        std::snprintf(buf, sizeof buf, "estimated relative error: n/a (needs 2 or more passes)");
+    }
+    out += buf;
+    if (s.targetError > 0.0) {
+        std::snprintf(buf, sizeof buf, "; target %.3g%% %s", 100.0 * s.targetError,
+                      s.reachedTarget ? "reached" : "not reached (pass or time limit first)");
+        out += buf;
+    }
+    return out + "\n";
 }
 
 std::string formatStatsJson(const RenderStats& s) {
@@ -60,7 +76,12 @@ std::string formatStatsJson(const RenderStats& s) {
     add("width", std::to_string(s.width));
     add("height", std::to_string(s.height));
     add("seed", std::to_string(s.seed));
-    add("features", jsonString(s.features), true);
+    add("features", jsonString(s.features));
+    add("fixed_grid", s.fixedGrid ? "true" : "false");
+    add("estimated_rel_error", number(s.estimatedRelError));
+    add("estimate_balanced", s.estimateBalanced ? "true" : "false");
+    add("target_error", number(s.targetError));
+    add("reached_target", s.reachedTarget ? "true" : "false", true);
     return j + "}\n";
 }
 

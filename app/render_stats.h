@@ -1,6 +1,7 @@
 // RenderStats: the seed's timing split plus counts, printed at the end and written by --stats as JSON.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -16,6 +17,11 @@ struct RenderStats {
     std::string features;
     double parseSeconds = 0, uploadSeconds = 0, renderSeconds = 0;
     uint64_t rays = 0;
+    bool fixedGrid = false;             // --fixed-grid
+    double estimatedRelError = NAN;     // error_estimate.h; NaN when the halves cannot tell (e.g. 1 pass)
+    bool estimateBalanced = false;      // passes a multiple of 2·cycle: the estimate is unbiased there
+    double targetError = 0.0;           // --target-error (0 = none)
+    bool reachedTarget = false;
 
     double mraysPerSecond() const { return renderSeconds > 0 ? rays / renderSeconds * 1e-6 : 0.0; }
 };

@@ -1,13 +1,52 @@
-// Batching of passes: the first batch is one pass; later ones aim at kBatchSeconds each.
+// Batching of passes: the first batch is one pass; later ones aim at kBatchSeconds each. With a target
+// error the accumulation is read at growing intervals (multiples of 2·cycle, spaced by the predicted need).
 #include "render/progressive_render.h"
 
 #include <algorithm>
 #include <chrono>
 
+#include "device/flatten.h"
+#include "render/error_estimate.h"
+
 namespace trazo {
 
 namespace {
+
 constexpr double kBatchSeconds = 0.2;
+
+uint64_t secondHalfOffset(uint32_t cyclePasses) {
+    const uint64_t cycle = std::max(cyclePasses, 1u);
+    return ((uint64_t(kSecondHalfPassBit) + cycle - 1) / cycle) * cycle;  // >= 2^31, ≡ 0 mod cycle
+}
+
+uint64_t roundUp(uint64_t v, uint64_t step) { return (v + step - 1) / step * step; }
+
+}  // namespace
+
+bool splitsHalves(uint32_t cyclePasses) { return cyclePasses > 0 && cyclePasses < kMaxCyclePasses; }
+
+uint32_t halfBlockPasses(uint32_t cyclePasses) {
+    if (!splitsHalves(cyclePasses)) return kMaxProgressivePasses;
+    return cyclePasses & (~cyclePasses + 1u);
+}
+
+bool inSecondHalf(uint32_t pass, uint32_t cyclePasses) {
+    return splitsHalves(cyclePasses) && ((pass / halfBlockPasses(cyclePasses)) & 1u);
+}
+
+uint32_t kernelPassIndex(uint32_t pass, uint32_t cyclePasses) {
+    return inSecondHalf(pass, cyclePasses) ? uint32_t(pass + secondHalfOffset(cyclePasses)) : pass;
+}
+
+void renderPassRange(Backend& backend, const FrameParams& frame, uint32_t firstPass, uint32_t count,
+                     uint32_t cyclePasses) {
+    const uint32_t block = halfBlockPasses(cyclePasses);
+    const uint32_t end = firstPass + count;
+    for (uint32_t v = firstPass; v < end;) {
+        const uint32_t runEnd = std::min(end, (v / block + 1) * block);  // one block: one half, contiguous
+        backend.renderPasses(frame, kernelPassIndex(v, cyclePasses), runEnd - v);
+        v = runEnd;
+    }
 }
 
 RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, const RenderLimits& limits,
@@ -16,14 +55,42 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
     const auto start = Clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
+    const uint32_t maxPasses = std::min(limits.passes, kMaxProgressivePasses);
+    const bool targeted = limits.targetError > 0.0 && splitsHalves(limits.cyclePasses);
+    const uint64_t checkStep = 2ull * std::max(limits.cyclePasses, 1u);  // where the halves are balanced
+    uint64_t nextCheck = targeted ? checkStep : UINT64_MAX;
+    std::vector<AccumPixel> accum;
+
     RenderOutcome out;
     uint32_t batch = 1;
-    while (out.passes < limits.passes) {
-        const uint32_t count = std::min(batch, limits.passes - out.passes);
-        backend.renderPasses(frame, out.passes, count);
+    while (out.passes < maxPasses) {
+        const uint32_t count =
+            (uint32_t)std::min<uint64_t>({batch, maxPasses - out.passes, nextCheck - out.passes});
+        renderPassRange(backend, frame, out.passes, count, limits.cyclePasses);
         out.passes += count;
         const double t = elapsed();
-        if (onProgress) onProgress(RenderProgress{out.passes, limits.passes, t});
+
+        if (targeted && out.passes >= nextCheck) {
+            backend.readAccumulation(accum);
+            const ErrorEstimate e = estimateError(accum);
+            out.estimatedRelError = e.relError;
+            ++out.errorChecks;
+            if (e.available && e.relError <= limits.targetError) {
+                out.reachedTarget = true;
+                if (onProgress) onProgress(RenderProgress{out.passes, out.passes, t});
+                break;
+            }
+            // Error ∝ passes^-1/2: aim a little past the predicted need, at most doubling per check, so
+            // the reads stay a small share of the time and the stop lands near the target.
+            double predicted = 2.0 * out.passes;
+            if (e.available && e.relError > 0.0) {
+                const double ratio = e.relError / limits.targetError;
+                predicted = std::min(predicted, 1.05 * out.passes * ratio * ratio);
+            }
+            nextCheck = roundUp(std::max<uint64_t>((uint64_t)predicted, out.passes + 1), checkStep);
+        }
+        const uint32_t aim = targeted ? (uint32_t)std::min<uint64_t>(nextCheck, maxPasses) : maxPasses;
+        if (onProgress) onProgress(RenderProgress{out.passes, aim, t});
 
         const double perPass = t / out.passes;
         double target = kBatchSeconds;

@@ -1,7 +1,8 @@
-// renderProgressive(): runs passes on a backend until a pass count or a time budget is reached,
-// in batches sized so progress reports (and the time limit) stay responsive.
+// renderProgressive(): runs passes on a backend until a pass count, a time budget or a target error is
+// reached, in batches sized so progress reports (and the time limit) stay responsive. Host code.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 
@@ -9,14 +10,39 @@
 
 namespace trazo {
 
+// The two halves (AccumPixel::sumB). Passes v = 0, 1, 2, … alternate between the halves in blocks of
+// halfBlockPasses(cycle) passes, the largest power of two dividing the scene's full cycle. Every grid has
+// N | cycle strata and pass v takes stratum (offset + v) mod N, so over any 2·cycle passes from 0 each half
+// takes every stratum of every grid equally often (the block length absorbs N's factor 2^a, and the odd part
+// of N is covered because blocks of one half start 2·block apart and 2 is invertible modulo an odd number).
+// Both halves are then equally stratified, independent estimates and their difference measures the error of
+// the whole (error_estimate.h). At other pass counts the halves hold unequal strata and the estimate is rough:
+// below one cycle both halves see the same run of strata and it reads low (about half the true error on an
+// area light); at odd multiples of the cycle it reads high.
+// cyclePasses = 0 (the default), or a cycle that hit kMaxCyclePasses (then not every grid divides it), makes
+// no halves: every pass runs as itself and nothing can be estimated.
+bool splitsHalves(uint32_t cyclePasses);
+uint32_t halfBlockPasses(uint32_t cyclePasses);
+bool inSecondHalf(uint32_t pass, uint32_t cyclePasses);
+// The index the kernels see for pass v: v itself in the first half; in the second, v plus a multiple of the
+// cycle that sets kSecondHalfPassBit (same strata, other jitter). Valid for v < kMaxProgressivePasses.
+uint32_t kernelPassIndex(uint32_t pass, uint32_t cyclePasses);
+constexpr uint32_t kMaxProgressivePasses = 1u << 30;
+
 struct RenderLimits {
-    uint32_t passes = 1;     // stop after this many passes
-    double seconds = 0.0;    // and after this wall time, when > 0 (whichever comes first)
+    uint32_t passes = 1;       // stop after this many passes (capped at kMaxProgressivePasses)
+    double seconds = 0.0;      // and after this wall time, when > 0 (whichever comes first)
+    double targetError = 0.0;  // and once estimateError(...).relError <= this, when > 0
+    // The scene's full cycle (cyclePassesFor: fullCyclePasses, or 1 with FrameParams::fixedGrid, where every
+    // pass is complete): sets the half split, and the target error is checked only at multiples of
+    // 2·cyclePasses, where the estimate is unbiased (and a stratified image is at its best). 0: no halves,
+    // every pass runs under its own index (as a plain renderPasses loop would) and no target error.
+    uint32_t cyclePasses = 0;
 };
 
 struct RenderProgress {
     uint32_t passesDone;
-    uint32_t passesTarget;
+    uint32_t passesTarget;  // with a target error: the pass count the render now expects to need
     double elapsedSeconds;
 };
 
@@ -24,9 +50,16 @@ struct RenderOutcome {
     uint32_t passes = 0;
     double seconds = 0.0;
     uint64_t rays = 0;
+    double estimatedRelError = NAN;  // at the last target-error check (NaN when none was made)
+    uint32_t errorChecks = 0;        // accumulation reads made for the target error
+    bool reachedTarget = false;
 };
 
 RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, const RenderLimits& limits,
                                 const std::function<void(const RenderProgress&)>& onProgress = {});
+
+// Adds passes [firstPass, firstPass + count) of the numbering above (each half through its kernel indices).
+void renderPassRange(Backend& backend, const FrameParams& frame, uint32_t firstPass, uint32_t count,
+                     uint32_t cyclePasses);
 
 }  // namespace trazo

@@ -1,0 +1,179 @@
+// Unit tests of the error estimate, the half split and the target-error stop, on synthetic samples (a fake
+// backend whose "render" draws known random values), so the statistics are exact and quick.
+#include "render/error_estimate.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+#include <random>
+
+#include "core/rng.h"
+#include "render/progressive_render.h"
+
+namespace trazo {
+namespace {
+
+TEST(ErrorEstimate, FormulaOnTwoPixels) {
+    // Pixel 0: first half 2 samples summing to (2,4,6), second half 2 samples summing to (4,4,4).
+    std::vector<AccumPixel> accum(2);
+    accum[0] = AccumPixel{Vec3(6, 8, 10), 4.0f, Vec3(4, 4, 4), 2.0f};
+    accum[1] = AccumPixel{Vec3(4, 4, 4), 4.0f, Vec3(2, 2, 2), 2.0f};  // halves agree: no error
+    const ErrorEstimate e = estimateError(accum);
+    ASSERT_TRUE(e.available);
+    // Pixel 0: A = (1,2,3), B = (2,2,2), d = (-1,0,1); w = 2·2/16 = 1/4; variance sum = 0.25·2 = 0.5.
+    EXPECT_NEAR(e.rmse, std::sqrt(0.5 / 6.0), 1e-9);
+    EXPECT_NEAR(e.meanValue, (1.5 + 2 + 2.5 + 1 + 1 + 1) / 6.0, 1e-9);
+    EXPECT_NEAR(e.relError, e.rmse / e.meanValue, 1e-12);
+    EXPECT_EQ(e.passes, 4u);
+    EXPECT_EQ(e.secondHalfPasses, 2u);
+}
+
+TEST(ErrorEstimate, UnavailableWithOneHalfEmpty) {
+    std::vector<AccumPixel> accum(3, AccumPixel{Vec3(1, 1, 1), 1.0f, Vec3(0.0f), 0.0f});
+    const ErrorEstimate e = estimateError(accum);
+    EXPECT_FALSE(e.available);
+    EXPECT_TRUE(std::isnan(e.relError));
+    EXPECT_NEAR(e.meanValue, 1.0, 1e-12);
+}
+
+TEST(ErrorEstimate, AddSplitsOnTheSecondHalfBit) {
+    AccumPixel p{};
+    p.add(Vec3(1.0f), 5);
+    p.add(Vec3(2.0f), 5u | kSecondHalfPassBit);
+    EXPECT_EQ(p.count, 2.0f);
+    EXPECT_EQ(p.sum.x, 3.0f);
+    EXPECT_EQ(p.countB, 1.0f);
+    EXPECT_EQ(p.sumB.x, 2.0f);
+}
+
+TEST(ErrorEstimate, CompareToReference) {
+    const std::vector<Vec3> ref{Vec3(1, 1, 1), Vec3(3, 3, 3)};
+    const std::vector<Vec3> img{Vec3(1, 1, 1), Vec3(3, 3, 3.6f)};
+    const ReferenceError r = compareToReference(img, ref);
+    EXPECT_NEAR(r.rmse, std::sqrt(0.36 / 6), 1e-6);
+    EXPECT_NEAR(r.relError, std::sqrt(0.36 / 6) / 2.0, 1e-6);
+    EXPECT_NEAR(r.relMse, 0.36 / 9.01 / 6, 1e-6);
+}
+
+// Over every 2·cycle passes each half takes every stratum of every grid (N | cycle) equally often, and the
+// kernel index keeps the stratum: kernelPassIndex(v) ≡ v (mod cycle).
+TEST(HalfSplit, BalancedOverTwoCyclesForEveryGrid) {
+    for (uint32_t cycle : {1u, 2u, 12u, 16u, 18u, 100u, 200u, 800u, 1536u}) {
+        EXPECT_EQ(cycle % halfBlockPasses(cycle), 0u);
+        EXPECT_EQ((cycle / halfBlockPasses(cycle)) % 2, 1u) << "block is the largest power of 2 in " << cycle;
+        for (uint32_t n = 1; n <= cycle; ++n) {
+            if (cycle % n) continue;
+            std::vector<int> balance(n, 0);
+            for (uint32_t offset : {0u, 7u}) {
+                std::fill(balance.begin(), balance.end(), 0);
+                for (uint32_t v = 0; v < 2 * cycle; ++v) {
+                    const uint32_t k = kernelPassIndex(v, cycle);
+                    ASSERT_EQ(k % cycle, v % cycle);
+                    ASSERT_EQ((k & kSecondHalfPassBit) != 0, inSecondHalf(v, cycle));
+                    balance[(offset + v) % n] += inSecondHalf(v, cycle) ? 1 : -1;
+                }
+                for (uint32_t s = 0; s < n; ++s) ASSERT_EQ(balance[s], 0) << "cycle " << cycle << " grid " << n;
+            }
+        }
+    }
+}
+
+// A backend without a scene: pass v of pixel i adds f(i, stratum) + noise, with the strata of a grid of
+// `strata` cells cycled from a per-pixel offset exactly as the kernels do. Exact value per pixel known.
+class FakeBackend final : public Backend {
+public:
+    FakeBackend(uint32_t pixels, uint32_t strata, float noise) : strata_(strata), noise_(noise), accum_(pixels) {}
+    std::string name() const override { return "fake"; }
+    std::string deviceName() const override { return "test"; }
+    void upload(const SceneArrays&) override {}
+    void resize(uint32_t, uint32_t) override {}
+    void reset() override { std::fill(accum_.begin(), accum_.end(), AccumPixel{}); }
+    void renderPasses(const FrameParams&, uint32_t firstPass, uint32_t passCount) override {
+        for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
+            for (uint32_t i = 0; i < accum_.size(); ++i) {
+                const uint32_t s = stratumForPass(3, i, 0, pass, strata_);
+                SampleStream rng(3, i, pass);
+                const float u = (s + rng.next()) / strata_;
+                const float noise = noise_ * (rng.next() + rng.next() + rng.next() - 1.5f) * 2.0f;
+                accum_[i].add(Vec3(value(i, u) + noise), pass);
+            }
+        }
+        ++calls;
+    }
+    void readAccumulation(std::vector<AccumPixel>& out) override { out = accum_; }
+    uint64_t raysTraced() const override { return 0; }
+
+    // A ramp plus a step whose position depends on the pixel (like a penumbra), integrated exactly below.
+    static float value(uint32_t i, float u) {
+        return u + (u < 0.2f + 0.6f * ((i * 37u) % 100u) / 100.0f ? 0.8f : 0.2f);
+    }
+    static double exact(uint32_t i) {
+        const double edge = 0.2 + 0.6 * ((i * 37u) % 100u) / 100.0;
+        return 0.5 + edge * 0.8 + (1.0 - edge) * 0.2;
+    }
+    double trueRelError() const {
+        double se = 0, mean = 0;
+        for (uint32_t i = 0; i < accum_.size(); ++i) {
+            const double d = accum_[i].sum.x / accum_[i].count - exact(i);
+            se += d * d;
+            mean += exact(i);
+        }
+        return std::sqrt(se / accum_.size()) / (mean / accum_.size());
+    }
+    int calls = 0;
+
+private:
+    uint32_t strata_;
+    float noise_;
+    std::vector<AccumPixel> accum_;
+};
+
+// With the split following the cycle the estimate matches the true error at multiples of 2·cycle; split by
+// plain parity instead, the halves see different strata and it reads too high, more so with more passes.
+TEST(ErrorEstimate, StratifiedHalvesBracketTheTruth) {
+    constexpr uint32_t kStrata = 12;
+    FakeBackend backend(20000, kStrata, 0.02f);
+    const FrameParams frame{};
+    for (uint32_t passes : {24u, 48u, 96u}) {
+        backend.reset();
+        renderPassRange(backend, frame, 0, passes, kStrata);
+        std::vector<AccumPixel> accum;
+        backend.readAccumulation(accum);
+        const double estimate = estimateError(accum).relError, truth = backend.trueRelError();
+        EXPECT_GT(estimate, truth / 1.25) << passes << " passes";
+        EXPECT_LT(estimate, truth * 1.25) << passes << " passes";
+
+        backend.reset();
+        renderPassRange(backend, frame, 0, passes, 1);  // parity split: wrong for 12 strata
+        backend.readAccumulation(accum);
+        // The parity halves differ by a fixed amount (odd against even strata): the bias does not shrink.
+        if (passes >= 48) EXPECT_GT(estimateError(accum).relError, 2.0 * backend.trueRelError()) << passes;
+    }
+}
+
+TEST(ProgressiveRender, TargetErrorStopsNearTheTarget) {
+    constexpr uint32_t kStrata = 12;
+    FakeBackend backend(4000, kStrata, 0.5f);
+    RenderLimits limits;
+    limits.passes = kMaxProgressivePasses;
+    limits.cyclePasses = kStrata;
+    limits.targetError = 0.01;
+    const RenderOutcome out = renderProgressive(backend, FrameParams{}, limits);
+    EXPECT_TRUE(out.reachedTarget);
+    EXPECT_EQ(out.passes % (2 * kStrata), 0u) << "checked only where the halves are balanced";
+    EXPECT_LE(out.estimatedRelError, limits.targetError);
+    EXPECT_GT(backend.trueRelError(), 0.6 * limits.targetError) << out.passes << " passes: stopped too late";
+    EXPECT_LT(backend.trueRelError(), 1.25 * limits.targetError) << out.passes << " passes";
+    EXPECT_LE(out.errorChecks, 12u);
+
+    // The pass limit still bounds it.
+    backend.reset();
+    limits.passes = 48;
+    const RenderOutcome capped = renderProgressive(backend, FrameParams{}, limits);
+    EXPECT_EQ(capped.passes, 48u);
+    EXPECT_FALSE(capped.reachedTarget);
+}
+
+}  // namespace
+}  // namespace trazo

@@ -1,0 +1,169 @@
+// Convergence tools on a real render: the estimated error brackets the measured one, --target-error stops
+// near its target, the CLI reports the estimate, and the benchmark's log–log slope is about −1/2.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <fstream>
+#include <memory>
+
+#include "../bench/convergence/convergence_series.h"
+#include "device/flatten.h"
+#include "scene/scene_reader.h"
+#include "test_paths.h"
+
+namespace trazo::test {
+namespace {
+
+using namespace trazo::convergence;
+
+// A sphere over a floor under a 4×4 area light (cycle 16): a penumbra, so the image is noisy.
+const char* kPenumbraScene =
+    "SceneSettings\n{\n    RenderWidth 40\n    RenderHeight 30\n    IndirectQuality 0\n}\n"
+    "Camera\n{\n    POV 0 3 8\n    POI 0 1 0\n    FOV 45\n}\n"
+    "Material\n{\n    Name white\n    DiffuseColor 0.8 0.8 0.8\n}\n"
+    "Box\n{\n    Material white\n    Scale 8 0.2 8\n    Translation 0 -0.1 0\n}\n"
+    "Sphere\n{\n    Material white\n    Center 0 1 0\n    Radius 1\n}\n"
+    "AreaLight\n{\n    Position 0.5 4 0\n    Direction 0 -1 0\n    Width 3\n    Height 3\n    Subdivision 4 4\n"
+    "    Color 1 1 1\n}\n";
+
+class Convergence : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        Diagnostics diags;
+        scene_ = std::make_unique<Scene>(readSceneText(kPenumbraScene, tempPath("penumbra.scene"), diags));
+        ASSERT_FALSE(diags.hasErrors());
+        arrays_ = std::make_unique<SceneArrays>(flatten(*scene_).arrays);
+        std::string error;
+        backend_ = createBackend(BackendChoice::Cpu, 2, error);
+        ASSERT_TRUE(backend_) << error;
+        reference_ = std::make_unique<Reference>(renderReference(*backend_, *scene_, *arrays_, 40, 30, 8192, 77));
+    }
+    static void TearDownTestSuite() {
+        backend_.reset();
+        reference_.reset();
+        arrays_.reset();
+        scene_.reset();
+    }
+    static std::unique_ptr<Scene> scene_;
+    static std::unique_ptr<SceneArrays> arrays_;
+    static std::unique_ptr<Backend> backend_;
+    static std::unique_ptr<Reference> reference_;
+};
+std::unique_ptr<Scene> Convergence::scene_;
+std::unique_ptr<SceneArrays> Convergence::arrays_;
+std::unique_ptr<Backend> Convergence::backend_;
+std::unique_ptr<Reference> Convergence::reference_;
+
+TEST_F(Convergence, SceneIsNoisyWithACycleOf16) {
+    EXPECT_EQ(fullCyclePasses(*arrays_), 16u);
+    EXPECT_LT(reference_->estRelError, 0.004) << "the reference must be far better than what is measured";
+}
+
+TEST_F(Convergence, EstimateBracketsTheTrueError) {
+    SeriesRequest req;
+    req.width = 40, req.height = 30, req.seed = 5, req.maxPasses = 1024;
+    const std::vector<ConvergencePoint> points = runSeries(*backend_, *scene_, *arrays_, *reference_, req);
+    int checked = 0;
+    for (const ConvergencePoint& p : points) {
+        if (!p.balanced) continue;  // where the halves are equally stratified (multiples of 2 cycles)
+        EXPECT_GT(p.estRelError, p.trueRelError / 1.5) << p.passes << " passes";
+        EXPECT_LT(p.estRelError, p.trueRelError * 1.5) << p.passes << " passes";
+        ++checked;
+    }
+    EXPECT_GE(checked, 6);  // 32, 64, …, 1024
+}
+
+// The slope of the benchmark's own curve: error against render time on log–log axes, past one cycle (where
+// stratification no longer lets the error fall faster than Monte Carlo's 1/√n). Timing on a shared machine
+// is noisy, so the band is wider than for passes.
+TEST_F(Convergence, LogLogSlopeIsAboutMinusOneHalf) {
+    SeriesRequest req;
+    req.width = 40, req.height = 30, req.seed = 9, req.maxPasses = 2048;
+    const std::vector<ConvergencePoint> points = runSeries(*backend_, *scene_, *arrays_, *reference_, req);
+    const double slope = logLogSlope(points, 32);
+    EXPECT_LT(slope, -0.35);
+    EXPECT_GT(slope, -0.7);
+    // Against passes (no timing noise) the band is the issue's −0.6 … −0.4.
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int n = 0;
+    for (const ConvergencePoint& p : points) {
+        if (p.passes < 32) continue;
+        const double x = std::log(p.passes), y = std::log(p.trueRelError);
+        sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+    }
+    const double passSlope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    EXPECT_LT(passSlope, -0.4);
+    EXPECT_GT(passSlope, -0.6);
+    // Times to reach an error are ordered and interpolated between measured points.
+    const double t5 = timeToReach(points, 0.05), t2 = timeToReach(points, 0.02);
+    ASSERT_TRUE(std::isfinite(t5) && std::isfinite(t2));
+    EXPECT_LE(t5, t2);
+    EXPECT_TRUE(std::isnan(timeToReach(points, 1e-6)));
+}
+
+TEST_F(Convergence, TargetErrorStopsNearTheTarget) {
+    for (double target : {0.04, 0.015}) {
+        backend_->upload(*arrays_);
+        backend_->resize(40, 30);
+        RenderLimits limits;
+        limits.passes = kMaxProgressivePasses;
+        limits.cyclePasses = fullCyclePasses(*arrays_);
+        limits.targetError = target;
+        const RenderOutcome out = renderProgressive(*backend_, makeFrameParams(*scene_, 40, 30, 3), limits);
+        ASSERT_TRUE(out.reachedTarget);
+        const ReferenceError r = compareToReference(readImage(*backend_), reference_->image);
+        const double truth = std::sqrt(r.relError * r.relError - reference_->estRelError * reference_->estRelError);
+        EXPECT_LT(truth, 1.3 * target) << out.passes << " passes";
+        EXPECT_GT(truth, 0.5 * target) << out.passes << " passes: went on far longer than needed";
+    }
+}
+
+int runTrazo(const std::string& arguments, std::string& errors) {
+    const std::string errFile = tempPath("convergence_stderr.txt");
+    const int raw = std::system((trazoBinary() + " " + arguments + " 2>" + errFile + " >/dev/null").c_str());
+    errors = readFileText(errFile);
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+double jsonNumber(const std::string& json, const std::string& key) {
+    const size_t at = json.find("\"" + key + "\": ");
+    if (at == std::string::npos) return NAN;
+    return std::atof(json.c_str() + at + key.size() + 4);
+}
+
+TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
+    const std::string scene = tempPath("cli_penumbra.scene");
+    std::ofstream(scene) << kPenumbraScene;
+    const std::string out = tempPath("cli_penumbra.png"), stats = tempPath("cli_penumbra.json");
+    std::string errors;
+    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --spp 64 --stats " + stats, errors), 0) << errors;
+    std::string json = readFileText(stats);
+    const double estimate = jsonNumber(json, "estimated_rel_error");
+    EXPECT_GT(estimate, 0.001) << json;
+    EXPECT_LT(estimate, 0.2) << json;
+    EXPECT_NE(json.find("\"estimate_balanced\": true"), std::string::npos) << json;
+    EXPECT_NE(errors.find("estimated relative error"), std::string::npos) << errors;
+
+    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --target-error 0.03 --quiet --stats " + stats, errors),
+              0)
+        << errors;
+    json = readFileText(stats);
+    EXPECT_NE(json.find("\"reached_target\": true"), std::string::npos) << json;
+    EXPECT_LE(jsonNumber(json, "estimated_rel_error"), 0.03) << json;
+    const double spp = jsonNumber(json, "spp");
+    EXPECT_EQ(std::fmod(spp, 32.0), 0.0) << "stops at multiples of 2 cycles: " << json;
+    EXPECT_GT(spp, 16.0) << json;
+
+    // One pass has no second half: the estimate is reported as null, not as a number.
+    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --spp 1 --fixed-grid --quiet --stats " + stats, errors),
+              0)
+        << errors;
+    json = readFileText(stats);
+    EXPECT_NE(json.find("\"estimated_rel_error\": null"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"fixed_grid\": true"), std::string::npos) << json;
+}
+
+}  // namespace
+}  // namespace trazo::test
