@@ -37,11 +37,46 @@ struct SampleStream {
     TRAZO_HD float next() { return bitsToUnitFloat(nextBits()); }
 };
 
-// The stratum a pixel uses in a pass for a grid of `count` cells: the pass cycles through every
-// stratum, starting at an offset drawn per pixel and per grid so neighbouring pixels differ.
+// A pseudo-random permutation of [0, count) chosen by `key`: Kensler's hash-based permutation ("Correlated
+// Multi-Jittered Sampling", Pixar 2013), a bijection on the next power of two walked until it lands in range
+// (fewer than two rounds on average).
+TRAZO_HD uint32_t permuteIndex(uint32_t i, uint32_t count, uint32_t key) {
+    uint32_t w = count - 1;
+    w |= w >> 1;
+    w |= w >> 2;
+    w |= w >> 4;
+    w |= w >> 8;
+    w |= w >> 16;
+    do {
+        i ^= key;
+        i *= 0xe170893du;
+        i ^= key >> 16;
+        i ^= (i & w) >> 4;
+        i ^= key >> 8;
+        i *= 0x0929eb3fu;
+        i ^= key >> 23;
+        i ^= (i & w) >> 1;
+        i *= 1u | key >> 27;
+        i *= 0x6935fa69u;
+        i ^= (i & w) >> 11;
+        i *= 0x74dcb303u;
+        i ^= (i & w) >> 2;
+        i *= 0x9e501cc3u;
+        i ^= (i & w) >> 2;
+        i *= 0xc860a3dfu;
+        i &= w;
+        i ^= i >> 5;
+    } while (i >= count);
+    return (i + key) % count;
+}
+
+// The stratum a pixel uses in a pass for a grid of `count` cells: every `count` consecutive passes visit
+// every stratum once, in an order drawn per pixel and per grid. A shuffled order (rather than a sweep)
+// spreads the first passes of a cycle over the whole grid, so an image short of a full cycle is already
+// an unbiased estimate of the whole light or cone, not of one strip of it.
 TRAZO_HD uint32_t stratumForPass(uint32_t seed, uint32_t pixelIndex, uint32_t gridId, uint32_t pass, uint32_t count) {
-    const uint32_t offset = hashCombine(hashCombine(hashU32(seed + 0x68e31da4u), pixelIndex), gridId);
-    return (uint32_t)(((uint64_t)offset + pass) % count);
+    const uint32_t key = hashCombine(hashCombine(hashU32(seed + 0x68e31da4u), pixelIndex), gridId);
+    return permuteIndex(pass % count, count, key);
 }
 
 }  // namespace trazo

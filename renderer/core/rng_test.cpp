@@ -1,6 +1,7 @@
 // The counter-based sample stream and the per-pass strata.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <vector>
 
@@ -47,6 +48,25 @@ TEST(RngStrata, EveryCycleVisitsEveryStratumOnce) {
             ASSERT_LT(*seen.rbegin(), count);
         }
     }
+}
+
+// Passes p and p + count take the same stratum (the next cycle repeats the order), for any cycle.
+TEST(RngStrata, CyclesRepeatTheSameOrder) {
+    for (uint32_t count : {3u, 25u, 64u, 1000u})
+        for (uint32_t pass = 0; pass < 2 * count; ++pass)
+            ASSERT_EQ(stratumForPass(5, 77, 2, pass, count), stratumForPass(5, 77, 2, pass + 3 * count, count));
+}
+
+// The first quarter of a 10×10 cycle is spread over the grid, not swept along a few rows: a sweep puts all
+// 25 in 3 rows (10 in the fullest); a random order without replacement puts about 5 in the fullest row.
+TEST(RngStrata, FirstPassesOfACycleSpreadOverTheGrid) {
+    double fullestRow = 0;
+    for (uint32_t pixel = 0; pixel < 1000; ++pixel) {
+        int rows[10] = {};
+        for (uint32_t pass = 0; pass < 25; ++pass) ++rows[stratumForPass(1, pixel, 16, pass, 100) / 10];
+        fullestRow += *std::max_element(rows, rows + 10);
+    }
+    EXPECT_LT(fullestRow / 1000, 6.0);
 }
 
 TEST(RngStrata, NeighbouringPixelsStartAtDifferentStrata) {
