@@ -31,6 +31,12 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     app.add_option("--height", out.height, "Override RenderHeight")->check(CLI::Range(1u, 16384u));
     app.add_option("--stats", out.statsPath, "Write timings and counts as JSON to this file");
     app.add_flag("--quiet", out.quiet, "No progress bar");
+    app.add_option("--frames", out.frames, "Viewer: run N passes in the window, save --screenshot, exit 0")
+        ->check(CLI::Range(1u, 1u << 24))
+        ->type_name("N");
+    app.add_option("--screenshot", out.screenshot,
+                   "Viewer: image written after --frames passes (else the screenshot key's default name)")
+        ->type_name("FILE");
 
     try {
         app.parse(argc, argv);
@@ -48,6 +54,11 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     }
     if (!out.renderScene.empty() && !out.viewerScene.empty()) {
         std::fputs("trazo: give the scene either to --render or as the viewer's SCENE, not both\n", stderr);
+        return 2;
+    }
+    if (!out.renderScene.empty() && (out.frames || !out.screenshot.empty())) {
+        std::fputs("trazo: --frames and --screenshot are for the viewer (`trazo SCENE --frames N --screenshot FILE`); "
+                   "with --render use --spp and -o\n", stderr);
         return 2;
     }
     return std::nullopt;

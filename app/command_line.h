@@ -23,6 +23,8 @@ struct CommandLine {
     std::optional<uint32_t> width, height;
     std::string statsPath;
     bool quiet = false;
+    std::optional<uint32_t> frames;  // viewer automation: run N passes in the window, save --screenshot, exit
+    std::string screenshot;          // viewer: the automation's image, else the screenshot key's default name
 };
 
 // Parses argv. Returns the exit status to stop with (0 after --help/--version, 2 on bad usage, with the

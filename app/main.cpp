@@ -1,16 +1,33 @@
-// trazo: headless render (--render) or, in a later issue, the interactive viewer.
+// trazo: headless render (--render) or the interactive viewer (SCENE, with --frames/--screenshot for automation).
 #include <cstdio>
 
 #include "command_line.h"
 #include "headless_render.h"
+#if defined(TRAZO_HAS_VIEWER)
+#include "viewer_app.h"
+#endif
 
 int main(int argc, char** argv) {
     trazo::CommandLine options;
     if (auto status = trazo::parseCommandLine(argc, argv, options)) return *status;
     if (!options.renderScene.empty()) return trazo::runHeadlessRender(options);
+#if defined(TRAZO_HAS_VIEWER)
+    trazo::ViewerOptions viewer;
+    viewer.scenePath = options.viewerScene;
+    viewer.backend = options.backend;
+    viewer.threads = options.threads;
+    viewer.seed = options.seed;
+    viewer.width = options.width.value_or(0);
+    viewer.height = options.height.value_or(0);
+    viewer.frames = options.frames;
+    viewer.screenshot = options.screenshot;
+    viewer.quiet = options.quiet;
+    return trazo::runViewer(viewer);
+#else
     std::fprintf(stderr,
-                 "trazo: the interactive viewer is not part of this build yet; render headless with "
-                 "`trazo --render %s -o image.png`\n",
+                 "trazo: this build has no viewer (GLFW, Dear ImGui or python3-glad were missing); render headless "
+                 "with `trazo --render %s -o image.png`\n",
                  options.viewerScene.c_str());
     return 1;
+#endif
 }

@@ -30,6 +30,17 @@ public:
     virtual void readAccumulation(std::vector<AccumPixel>& out) = 0;
     // Rays traced since the last reset.
     virtual uint64_t raysTraced() const = 0;
+
+    // Display (the viewer): writes the current estimate, sum / count as float RGBA (alpha 1, row 0 = top),
+    // into the OpenGL buffer object `glBuffer` (at least width·height·16 bytes; width × height must be the
+    // accumulation's size) without a copy through the host. Needs a GL context current on this thread that
+    // the backend's device can share (CUDA-GL interop). Returns false with the reason when it cannot; the
+    // caller then fills the buffer from readAccumulation() itself.
+    virtual bool resolveToGlBuffer(unsigned glBuffer, uint32_t width, uint32_t height, std::string& why) {
+        (void)glBuffer, (void)width, (void)height;
+        why = "the " + name() + " backend has no GL interop";
+        return false;
+    }
 };
 
 enum class BackendChoice { Auto, Cpu, Cuda };

@@ -10,6 +10,13 @@
 
 namespace trazo {
 
+// The viewer's CUDA-GL interop (cuda_gl_display.cu).
+class CudaGlDisplay;
+CudaGlDisplay* createCudaGlDisplay();
+void destroyCudaGlDisplay(CudaGlDisplay* display);
+bool resolveIntoGlBuffer(CudaGlDisplay& display, unsigned glBuffer, const AccumPixel* accum, uint32_t width,
+                         uint32_t height, std::string& why);
+
 namespace {
 
 // Throws with the failing call's file:line; Backend methods turn it into a runtime failure (exit 1).
@@ -134,6 +141,14 @@ public:
         out.resize(pixelCount());
         TRAZO_CUDA_CHECK(cudaMemcpy(out.data(), accum_, pixelCount() * sizeof(AccumPixel), cudaMemcpyDeviceToHost));
     }
+    bool resolveToGlBuffer(unsigned glBuffer, uint32_t width, uint32_t height, std::string& why) override {
+        if (width != width_ || height != height_) {
+            why = "the GL buffer's size differs from the accumulation's";
+            return false;
+        }
+        if (!glDisplay_) glDisplay_.reset(createCudaGlDisplay());
+        return resolveIntoGlBuffer(*glDisplay_, glBuffer, accum_, width, height, why);
+    }
     uint64_t raysTraced() const override {
         unsigned long long rays = 0;
         TRAZO_CUDA_CHECK(cudaMemcpy(&rays, rayCounter_, sizeof(rays), cudaMemcpyDeviceToHost));
@@ -153,6 +168,7 @@ private:
     AccumPixel* accum_ = nullptr;
     unsigned long long* rayCounter_ = nullptr;
     uint32_t width_ = 0, height_ = 0;
+    std::unique_ptr<CudaGlDisplay, void (*)(CudaGlDisplay*)> glDisplay_{nullptr, destroyCudaGlDisplay};
 };
 
 }  // namespace

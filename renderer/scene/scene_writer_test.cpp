@@ -1,0 +1,168 @@
+// Round trip of the scene writer: read a scene, write it, read the text back, and get the same scene
+// (every field, transforms in order, texture and material references, files found again).
+#include "scene/scene_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+
+#include "scene/scene_reader.h"
+#include "test_paths.h"
+
+namespace trazo {
+namespace {
+
+std::string listed(const Diagnostics& d) {
+    std::string s;
+    for (const Diagnostic& x : d.items)
+        if (x.severity == Severity::Error) s += formatDiagnostic(x) + "\n";
+    return s;
+}
+
+// Bit-for-bit equality of floats (the writer prints enough digits for it).
+bool same(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same(Vec3 a, Vec3 b) { return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z); }
+bool sameFile(const std::string& a, const std::string& b) { return std::filesystem::equivalent(a, b); }
+
+void expectSameTransforms(const std::vector<TransformStep>& a, const std::vector<TransformStep>& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].kind, b[i].kind) << i;
+        EXPECT_TRUE(same(a[i].value, b[i].value)) << i;
+        EXPECT_TRUE(same(a[i].angle, b[i].angle)) << i;
+    }
+}
+
+void expectSameScene(const Scene& a, const Scene& b) {
+    EXPECT_TRUE(same(a.settings.backgroundColor, b.settings.backgroundColor));
+    EXPECT_EQ(a.settings.renderWidth, b.settings.renderWidth);
+    EXPECT_EQ(a.settings.renderHeight, b.settings.renderHeight);
+    EXPECT_EQ(a.settings.reflectionQuality, b.settings.reflectionQuality);
+    EXPECT_EQ(a.settings.reflectionSteps, b.settings.reflectionSteps);
+    EXPECT_EQ(a.settings.indirectQuality, b.settings.indirectQuality);
+    EXPECT_TRUE(same(a.settings.colorBleeding, b.settings.colorBleeding));
+    EXPECT_EQ(a.settings.antialiasing, b.settings.antialiasing);
+    EXPECT_TRUE(same(a.camera.pov, b.camera.pov));
+    EXPECT_TRUE(same(a.camera.poi, b.camera.poi));
+    EXPECT_TRUE(same(a.camera.fovDegrees, b.camera.fovDegrees));
+
+    ASSERT_EQ(a.textures.size(), b.textures.size());
+    for (size_t i = 0; i < a.textures.size(); ++i) {
+        EXPECT_EQ(a.textures[i].name, b.textures[i].name);
+        EXPECT_TRUE(sameFile(a.textures[i].source, b.textures[i].source));
+    }
+    ASSERT_EQ(a.materials.size(), b.materials.size());
+    for (size_t i = 0; i < a.materials.size(); ++i) {
+        const Material &x = a.materials[i], &y = b.materials[i];
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_TRUE(same(x.diffuseColor, y.diffuseColor) && same(x.specularColor, y.specularColor) &&
+                    same(x.emissiveColor, y.emissiveColor)) << x.name;
+        EXPECT_EQ(x.diffuseTexture, y.diffuseTexture);
+        EXPECT_EQ(x.specularTexture, y.specularTexture);
+        EXPECT_EQ(x.emissiveTexture, y.emissiveTexture);
+        EXPECT_EQ(x.normalTexture, y.normalTexture);
+        EXPECT_TRUE(same(x.roughness, y.roughness) && same(x.opacity, y.opacity) &&
+                    same(x.refractionIndex, y.refractionIndex) &&
+                    same(x.reflectionAngleDegrees, y.reflectionAngleDegrees) &&
+                    same(x.reflectionAmount, y.reflectionAmount)) << x.name;
+    }
+    ASSERT_EQ(a.spheres.size(), b.spheres.size());
+    for (size_t i = 0; i < a.spheres.size(); ++i) {
+        EXPECT_EQ(a.spheres[i].material, b.spheres[i].material);
+        EXPECT_TRUE(same(a.spheres[i].center, b.spheres[i].center) && same(a.spheres[i].radius, b.spheres[i].radius));
+    }
+    ASSERT_EQ(a.boxes.size(), b.boxes.size());
+    for (size_t i = 0; i < a.boxes.size(); ++i) {
+        EXPECT_EQ(a.boxes[i].material, b.boxes[i].material);
+        expectSameTransforms(a.boxes[i].transforms, b.boxes[i].transforms);
+    }
+    ASSERT_EQ(a.cylinders.size(), b.cylinders.size());
+    for (size_t i = 0; i < a.cylinders.size(); ++i) {
+        const Cylinder &x = a.cylinders[i], &y = b.cylinders[i];
+        EXPECT_EQ(x.material, y.material);
+        EXPECT_TRUE(same(x.base, y.base) && same(x.axis, y.axis) && same(x.height, y.height) && same(x.radius, y.radius));
+    }
+    ASSERT_EQ(a.csgs.size(), b.csgs.size());
+    for (size_t i = 0; i < a.csgs.size(); ++i) {
+        EXPECT_EQ(a.csgs[i].material, b.csgs[i].material);
+        EXPECT_TRUE(sameFile(a.csgs[i].source, b.csgs[i].source));
+        expectSameTransforms(a.csgs[i].transforms, b.csgs[i].transforms);
+        ASSERT_TRUE(b.csgs[i].tree);
+        EXPECT_EQ(a.csgs[i].tree->nodes.size(), b.csgs[i].tree->nodes.size());
+    }
+    ASSERT_EQ(a.meshes.size(), b.meshes.size());
+    for (size_t i = 0; i < a.meshes.size(); ++i) {
+        EXPECT_EQ(a.meshes[i].material, b.meshes[i].material);
+        EXPECT_TRUE(sameFile(a.meshes[i].source, b.meshes[i].source));
+        expectSameTransforms(a.meshes[i].transforms, b.meshes[i].transforms);
+        ASSERT_TRUE(b.meshes[i].data);
+        EXPECT_EQ(a.meshes[i].data->corners.size(), b.meshes[i].data->corners.size());
+    }
+    ASSERT_EQ(a.pointLights.size(), b.pointLights.size());
+    for (size_t i = 0; i < a.pointLights.size(); ++i) {
+        EXPECT_TRUE(same(a.pointLights[i].position, b.pointLights[i].position));
+        EXPECT_TRUE(same(a.pointLights[i].color, b.pointLights[i].color));
+    }
+    ASSERT_EQ(a.areaLights.size(), b.areaLights.size());
+    for (size_t i = 0; i < a.areaLights.size(); ++i) {
+        const AreaLight &x = a.areaLights[i], &y = b.areaLights[i];
+        EXPECT_TRUE(same(x.color, y.color) && same(x.position, y.position) && same(x.direction, y.direction));
+        EXPECT_TRUE(same(x.rollAngle, y.rollAngle) && same(x.width, y.width) && same(x.height, y.height));
+        EXPECT_EQ(x.subdivisionX, y.subdivisionX);
+        EXPECT_EQ(x.subdivisionY, y.subdivisionY);
+    }
+}
+
+// write → read in another folder → same scene; and writing that again gives the same text.
+void roundTrip(const Scene& original, const std::string& outPath) {
+    std::string error;
+    ASSERT_TRUE(writeSceneFile(original, outPath, error)) << error;
+    Diagnostics diags;
+    const Scene back = readSceneFile(outPath, diags);
+    ASSERT_FALSE(diags.hasErrors()) << listed(diags) << formatScene(original, outPath);
+    expectSameScene(original, back);
+    EXPECT_EQ(formatScene(original, outPath), formatScene(back, outPath));
+}
+
+class SceneWriterSeedTest : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SceneWriterSeedTest, RoundTripGivesTheSameScene) {
+    Diagnostics diags;
+    const Scene original = readSceneFile(test::sourcePath(std::string("scenes/") + GetParam()), diags);
+    ASSERT_FALSE(diags.hasErrors()) << listed(diags);
+    std::filesystem::create_directories(test::tempPath("writer"));
+    roundTrip(original, test::tempPath("writer") + "/" + GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(SeedScenes, SceneWriterSeedTest,
+                         ::testing::Values("scene1_area.scene", "scene3_csg.scene", "scene6_glossy.scene",
+                                           "scene7_refract.scene", "scene8_textured_mesh.scene"));
+
+TEST(SceneWriterTest, EditedFieldsAndAwkwardValuesSurvive) {
+    Diagnostics diags;
+    Scene scene = readSceneText(
+        "Material {\n Name glass\n}\nSphere {\n}\nBox {\n Material glass\n Scale 1 2 3\n Rotation 0 1 0 0.3\n"
+        " Translation 1 0 0\n Rotation 1 1 0 -1e-7\n}\nCylinder {\n Material glass\n}\nPointLight {\n}\n",
+        test::tempPath("edited") + "/in.scene", diags);
+    ASSERT_FALSE(diags.hasErrors()) << listed(diags);
+    scene.settings.backgroundColor = Vec3(0.1f, 1e-20f, 3.4e38f);
+    scene.settings.antialiasing = 16;
+    scene.camera.fovDegrees = 33.333333f;
+    scene.materials[0].opacity = 0.1f;
+    scene.materials[0].reflectionAmount = 1.0f / 3.0f;
+    scene.areaLights.push_back(AreaLight{});
+    scene.areaLights[0].rollAngle = -0.7f;
+    scene.areaLights[0].subdivisionX = 7;
+    std::filesystem::create_directories(test::tempPath("edited-out"));
+    roundTrip(scene, test::tempPath("edited-out") + "/out.scene");
+}
+
+TEST(SceneWriterTest, UnwritableFolderFailsWithAReason) {
+    std::string error;
+    EXPECT_FALSE(writeSceneFile(Scene{}, test::tempPath("missing-folder") + "/x/y.scene", error));
+    EXPECT_FALSE(error.empty());
+}
+
+}  // namespace
+}  // namespace trazo

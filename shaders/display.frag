@@ -1,0 +1,39 @@
+#version 330 core
+// The display pass's fragment stage: the estimate (sum / count, linear RGB, row 0 = top of the image) shown
+// in `imageRect` (x, y, width, height in framebuffer pixels, origin bottom-left), with an exposure and one of
+// three tone curves. Mode 0 at exposure 0 shows exactly what a PNG screenshot stores (the seed's
+// round(255·clamp(c)), no gamma); the default framebuffer is not sRGB, so the value written is the byte shown.
+uniform sampler2D estimate;
+uniform vec4 imageRect;
+uniform float exposureScale;  // 2^stops
+uniform int toneMode;         // 0: the seed's clamp, 1: sRGB, 2: filmic (ACES fit) then sRGB
+uniform vec3 outsideColor;
+
+out vec4 fragColor;
+
+vec3 srgbFromLinear(vec3 c) {
+    c = clamp(c, 0.0, 1.0);
+    return mix(c * 12.92, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
+// Narkowicz's fit of the ACES filmic curve (2015).
+vec3 filmic(vec3 c) {
+    return clamp((c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14), 0.0, 1.0);
+}
+
+void main() {
+    vec2 uv = (gl_FragCoord.xy - imageRect.xy) / imageRect.zw;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) {
+        fragColor = vec4(outsideColor, 1.0);
+        return;
+    }
+    vec3 c = texture(estimate, vec2(uv.x, 1.0 - uv.y)).rgb * exposureScale;
+    if (toneMode == 1) {
+        c = srgbFromLinear(c);
+    } else if (toneMode == 2) {
+        c = srgbFromLinear(filmic(c));
+    } else {
+        c = clamp(c, 0.0, 1.0);
+    }
+    fragColor = vec4(c, 1.0);
+}

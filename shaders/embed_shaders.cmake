@@ -1,0 +1,18 @@
+# Turns the GLSL files into a C++ header of string constants (run by the build: cmake -P).
+# -DOUT=header -DNAMES=kName1,kName2 -DFILES=a.vert,b.frag
+string(REPLACE "," ";" NAMES "${NAMES}")
+string(REPLACE "," ";" FILES "${FILES}")
+list(LENGTH NAMES count)
+math(EXPR last "${count} - 1")
+set(text "// Generated from shaders/ by shaders/embed_shaders.cmake at build time; edit the .vert/.frag files.\n")
+string(APPEND text "#pragma once\n\nnamespace trazo::shaders {\n\n")
+foreach(i RANGE ${last})
+  list(GET NAMES ${i} name)
+  list(GET FILES ${i} file)
+  file(READ ${file} source)
+  string(APPEND text "inline constexpr const char* ${name} = R\"glsl(${source})glsl\";\n\n")
+endforeach()
+string(APPEND text "}  // namespace trazo::shaders\n")
+file(WRITE ${OUT}.tmp "${text}")
+file(COPY_FILE ${OUT}.tmp ${OUT} ONLY_IF_DIFFERENT)
+file(REMOVE ${OUT}.tmp)

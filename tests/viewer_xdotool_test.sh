@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# A scripted viewer session under Xvfb with real X input (xdotool): open a small scene, press P (screenshot),
+# drag with the left button over the image (orbit), press P again. Passes when both screenshots were written
+# and differ (the orbit moved the camera), and Ctrl+Q closes the viewer with status 0.
+# Usage: viewer_xdotool_test.sh TRAZO SCENES_DIR. Exit 77 (CTest SKIP_RETURN_CODE) without xvfb-run/xdotool.
+set -u
+trazo=$(realpath "$1")
+scenes=$(realpath "$2")
+if [ -z "${TRAZO_INSIDE_XVFB:-}" ]; then
+    for tool in xvfb-run xauth Xvfb xdotool cmp; do
+        if ! command -v "$tool" >/dev/null 2>&1; then
+            echo "SKIP: $tool is not installed (apt-get install xvfb xauth xdotool; scripts/setup.sh does)"
+            exit 77
+        fi
+    done
+    TRAZO_INSIDE_XVFB=1 exec timeout 150 xvfb-run -a -s "-screen 0 800x600x24" bash "$0" "$@"
+fi
+
+work=$(mktemp -d)
+pid=
+cleanup() {
+    [ -n "$pid" ] && kill "$pid" 2>/dev/null
+    rm -rf "$work"
+}
+trap cleanup EXIT
+fail() {
+    echo "FAIL: $*"
+    echo "--- viewer log"; cat "$work/viewer.log" 2>/dev/null
+    exit 1
+}
+count_shots() { ls "$work"/trazo-*.png 2>/dev/null | wc -l; }
+wait_for_shots() {  # up to 20 s for $1 screenshots
+    for _ in $(seq 200); do
+        [ "$(count_shots)" -ge "$1" ] && return 0
+        sleep 0.1
+    done
+    return 1
+}
+press_p_for_shot() {  # presses P until screenshot number $1 exists (a key lost before focus is pressed again)
+    for _ in 1 2 3; do
+        xdotool key --clearmodifiers p
+        wait_for_shots "$1" && return 0
+    done
+    return 1
+}
+
+cd "$work"
+# 160x120 renders fast; the window opens at 640x480 (the image scaled) with the panel on its left third.
+"$trazo" "$scenes/scene1_area.scene" --backend cpu --width 160 --height 120 >"$work/viewer.log" 2>&1 &
+pid=$!
+wid=$(timeout 30 xdotool search --sync --onlyvisible --name '^trazo' | head -n 1)
+[ -n "$wid" ] || fail "the viewer window did not appear within 30 s"
+timeout 10 xdotool windowfocus --sync "$wid" || fail "could not focus the window"
+sleep 0.5
+
+press_p_for_shot 1 || fail "the first screenshot (key P) was not written"
+
+# Orbit: left drag across the image, away from the panel (right part of the window), in small steps.
+xdotool mousemove --window "$wid" 520 240 sleep 0.2 mousedown 1 sleep 0.1
+for step in $(seq 1 10); do
+    xdotool mousemove --window "$wid" $((520 + 8 * step)) $((240 + 2 * step)) sleep 0.03
+done
+xdotool mouseup 1 sleep 0.2
+press_p_for_shot 2 || fail "the second screenshot (key P after the drag) was not written"
+
+[ "$(count_shots)" -eq 2 ] || fail "expected 2 screenshots, found $(count_shots)"
+# In the order taken, with their pass counts, from the viewer's "saved NAME (N passes)" lines.
+mapfile -t shots < <(sed -n 's/^trazo: saved \(trazo-[^ ]*\.png\) ([0-9]* passes)$/\1/p' "$work/viewer.log")
+mapfile -t passes < <(sed -n 's/^trazo: saved trazo-[^ ]*\.png (\([0-9]*\) passes)$/\1/p' "$work/viewer.log")
+[ "${#shots[@]}" -eq 2 ] && [ "${#passes[@]}" -eq 2 ] || fail "expected 2 'saved' lines in the log"
+if cmp -s "${shots[0]}" "${shots[1]}"; then fail "the image did not change after the orbit drag"; fi
+echo "ok: two screenshots written and different: ${shots[*]}"
+# The screenshots hold different pass counts, so "different" alone proves little: the first must equal the file
+# camera's headless render at its pass count, the second must not (the orbit moved the camera).
+for i in 0 1; do
+    "$trazo" --render "$scenes/scene1_area.scene" --backend cpu --width 160 --height 120 --spp "${passes[$i]}" \
+        -o "$work/headless$i.png" --quiet || fail "headless render failed"
+done
+cmp -s "${shots[0]}" "$work/headless0.png" || fail "the first screenshot differs from --render --spp ${passes[0]}"
+cmp -s "${shots[1]}" "$work/headless1.png" && fail "the second screenshot still shows the file's camera"
+echo "ok: screenshot 1 == headless render of the file camera; screenshot 2 (after the orbit) is not"
+
+xdotool key --clearmodifiers ctrl+q 2>/dev/null
+for _ in $(seq 100); do
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.1
+done
+kill -0 "$pid" 2>/dev/null && fail "Ctrl+Q did not close the viewer within 10 s"
+wait "$pid"
+status=$?
+pid=
+[ $status -eq 0 ] || fail "the viewer exited with $status"
+echo "ok: Ctrl+Q closed the viewer"
+cat "$work/viewer.log"

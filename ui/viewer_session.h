@@ -1,0 +1,102 @@
+// ViewerSession: the model behind the viewer window: the edited scene, its backend and the progressive
+// accumulation. Edits mark what changed; applyEdits() re-flattens and re-uploads (or only resets, for the
+// camera) and restarts the accumulation. Passes run in batches on a worker thread, so the window stays
+// responsive while the backend works. No window and no GL: the tests drive it directly.
+#pragma once
+
+#include <functional>
+#include <future>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "backends/backend.h"
+#include "device/flatten.h"
+#include "dirty_flags.h"
+#include "scene/scene.h"
+
+namespace trazo {
+
+class ViewerSession {
+public:
+    // `scene` must have been read without errors. The render size starts as width × height (0: the scene's
+    // RenderWidth × RenderHeight). Uploads, allocates and clears: ready for passes.
+    ViewerSession(Scene scene, std::unique_ptr<Backend> backend, uint32_t seed, uint32_t width = 0, uint32_t height = 0);
+    ~ViewerSession();  // waits for a running batch
+    ViewerSession(const ViewerSession&) = delete;
+    ViewerSession& operator=(const ViewerSession&) = delete;
+
+    // The scene being edited (the UI thread's, even while a batch runs: batches see only the backend's copy).
+    Scene& scene() { return scene_; }
+    const Scene& scene() const { return scene_; }
+    const Scene& fileScene() const { return fileScene_; }  // as read, for "reset camera" and comparisons
+    void markDirty(DirtyFlags flags) { dirty_ |= flags; }
+    DirtyFlags dirty() const { return dirty_; }
+    void setRenderSize(uint32_t width, uint32_t height);  // marks kDirtySize when it differs
+    // Renders at 1/divisor of the render size in each direction (a preview while the user moves things);
+    // 1 = full size. Marks kDirtySize when it changes.
+    void setPreviewDivisor(uint32_t divisor);
+    uint32_t previewDivisor() const { return previewDivisor_; }
+    uint32_t renderWidth() const { return requestedWidth_; }  // the full size (what screenshots hold)
+    uint32_t renderHeight() const { return requestedHeight_; }
+    void replaceBackend(std::unique_ptr<Backend> backend);  // waits, uploads, allocates, clears
+
+    // Batches of passes, one at a time. startPasses applies pending edits first.
+    void startPasses(uint32_t count);
+    void renderPasses(uint32_t count) {  // synchronous (tests, automation)
+        startPasses(count);
+        waitIdle();
+    }
+    // True while a batch runs; collects a finished one (and rethrows its exception, e.g. a CUDA error).
+    bool busy();
+    void waitIdle();
+    // Redoes what the dirty flags say (waits for the batch first) and clears the accumulation.
+    void applyEdits();
+    // Passes for the next batch so that it takes about `seconds` (1 right after a reset: first image fast).
+    uint32_t passesForBudget(double seconds) const;
+    // Measured cost of one pass per pixel (0 before the first batch): predicts a pass at another size.
+    double secondsPerPixelPass() const { return secondsPerPixelPass_; }
+    // Called on the worker thread when a batch ends (the window wakes its event loop with it).
+    void setOnBatchDone(std::function<void()> callback) { onBatchDone_ = std::move(callback); }
+
+    // The accumulation; meaningful while !busy().
+    Backend& backend() { return *backend_; }
+    uint32_t width() const { return width_; }  // the accumulation's size (smaller during a preview)
+    uint32_t height() const { return height_; }
+    uint32_t passes() const { return passes_; }  // since the last reset
+    uint32_t cyclePasses() const { return cyclePasses_; }
+    uint64_t rays() const { return rays_; }
+    double renderSeconds() const { return renderSeconds_; }  // batch time since the last reset
+    uint64_t generation() const { return generation_; }      // changes whenever the accumulation does
+    uint32_t seed() const { return seed_; }
+    const std::vector<std::string>& unsupported() const { return flat_.unsupported; }
+    std::vector<Vec3> image();  // sum / count per pixel, row 0 = top (waits for the batch)
+
+private:
+    void uploadScene();
+    void clearAccumulation();
+
+    Scene scene_, fileScene_;
+    std::unique_ptr<Backend> backend_;
+    uint32_t seed_;
+    uint32_t width_ = 0, height_ = 0, requestedWidth_ = 0, requestedHeight_ = 0, previewDivisor_ = 1;
+    FlattenResult flat_;
+    FrameParams frame_{};
+    uint32_t cyclePasses_ = 1;
+    DirtyFlags dirty_ = kDirtyNone;
+
+    std::thread worker_;
+    std::future<double> batch_;  // seconds the batch took
+    uint32_t batchPasses_ = 0;
+    std::function<void()> onBatchDone_;
+
+    uint32_t passes_ = 0;
+    uint64_t rays_ = 0;
+    double renderSeconds_ = 0.0;
+    double secondsPerPass_ = 0.0;  // of the last batch, for the budget
+    double secondsPerPixelPass_ = 0.0;
+    uint64_t generation_ = 0;
+};
+
+}  // namespace trazo

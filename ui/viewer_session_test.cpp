@@ -1,0 +1,200 @@
+// Tests of the viewer's model without a window: edits re-flatten and re-upload (or only reset, for the camera),
+// resizing reallocates, batches run on the worker and add up to exactly the headless render's image.
+#include "viewer_session.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstring>
+#include <stdexcept>
+
+#include "render/frame_setup.h"
+#include "render/progressive_render.h"
+#include "scene/scene_reader.h"
+#include "test_paths.h"
+
+namespace trazo {
+namespace {
+
+// Records what the session asks of a backend (no rendering).
+class RecordingBackend final : public Backend {
+public:
+    struct Calls {
+        int upload = 0, resize = 0, reset = 0, render = 0;
+        uint32_t width = 0, height = 0, passes = 0;
+        SceneArrays lastUpload;
+        FrameParams lastFrame{};
+    };
+    explicit RecordingBackend(Calls& calls, bool throwOnRender = false) : calls_(calls), throw_(throwOnRender) {}
+    std::string name() const override { return "recording"; }
+    std::string deviceName() const override { return "test"; }
+    void upload(const SceneArrays& arrays) override {
+        ++calls_.upload;
+        calls_.lastUpload = arrays;
+    }
+    void resize(uint32_t width, uint32_t height) override {
+        ++calls_.resize;
+        calls_.width = width;
+        calls_.height = height;
+    }
+    void reset() override { ++calls_.reset; }
+    void renderPasses(const FrameParams& frame, uint32_t, uint32_t count) override {
+        if (throw_) throw std::runtime_error("device lost");
+        ++calls_.render;
+        calls_.passes += count;
+        calls_.lastFrame = frame;
+    }
+    void readAccumulation(std::vector<AccumPixel>& out) override { out.assign(size_t(calls_.width) * calls_.height, {}); }
+    uint64_t raysTraced() const override { return 0; }
+
+private:
+    Calls& calls_;
+    bool throw_;
+};
+
+Scene readScene(const std::string& relative) {
+    Diagnostics diags;
+    Scene scene = readSceneFile(test::sourcePath(relative), diags);
+    EXPECT_FALSE(diags.hasErrors());
+    return scene;
+}
+
+TEST(ViewerSessionTest, StartsUploadedSizedAndClear) {
+    RecordingBackend::Calls calls;
+    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 40, 30);
+    EXPECT_EQ(calls.upload, 1);
+    EXPECT_EQ(calls.resize, 1);
+    EXPECT_EQ(calls.width, 40u);
+    EXPECT_EQ(calls.height, 30u);
+    EXPECT_GE(calls.reset, 1);
+    EXPECT_EQ(session.passes(), 0u);
+    EXPECT_EQ(session.cyclePasses(), 100u);  // the 10×10 area light
+}
+
+TEST(ViewerSessionTest, MaterialEditReuploadsAndRestarts) {
+    RecordingBackend::Calls calls;
+    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
+    session.renderPasses(3);
+    EXPECT_EQ(session.passes(), 3u);
+    const int uploads = calls.upload, resets = calls.reset, resizes = calls.resize;
+
+    session.scene().materials[1].diffuseColor = Vec3(0.2f, 0.3f, 0.4f);
+    session.markDirty(kDirtyScene);
+    session.applyEdits();
+    EXPECT_EQ(calls.upload, uploads + 1);
+    EXPECT_EQ(calls.reset, resets + 1);
+    EXPECT_EQ(calls.resize, resizes);  // no reallocation for an edit
+    EXPECT_EQ(session.passes(), 0u);
+    EXPECT_EQ(calls.lastUpload.materials[1].diffuse.y, 0.3f);  // the edit reached the upload
+    session.applyEdits();                                            // nothing dirty: nothing done
+    EXPECT_EQ(calls.upload, uploads + 1);
+    EXPECT_EQ(calls.reset, resets + 1);
+}
+
+TEST(ViewerSessionTest, CameraEditResetsWithoutUpload) {
+    RecordingBackend::Calls calls;
+    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
+    session.renderPasses(2);
+    const int uploads = calls.upload, resets = calls.reset;
+    session.scene().camera.pov = Vec3(1, 5, 15);
+    session.markDirty(kDirtyCamera);
+    session.renderPasses(1);  // applies the edit first
+    EXPECT_EQ(calls.upload, uploads);
+    EXPECT_EQ(calls.reset, resets + 1);
+    EXPECT_EQ(session.passes(), 1u);
+    EXPECT_EQ(calls.lastFrame.camera.origin.x, 1.0f);
+}
+
+TEST(ViewerSessionTest, ResizeReallocates) {
+    RecordingBackend::Calls calls;
+    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
+    session.renderPasses(2);
+    session.setRenderSize(16, 16);  // the same size: nothing to do
+    EXPECT_EQ(session.dirty(), kDirtyNone);
+    session.setRenderSize(24, 12);
+    session.applyEdits();
+    EXPECT_EQ(calls.resize, 2);
+    EXPECT_EQ(calls.width, 24u);
+    EXPECT_EQ(calls.height, 12u);
+    EXPECT_EQ(session.width(), 24u);
+    EXPECT_EQ(session.passes(), 0u);
+    session.renderPasses(1);
+    EXPECT_EQ(calls.lastFrame.camera.width, 24u);
+}
+
+TEST(ViewerSessionTest, PreviewRendersSmallerAndFullSizeReturns) {
+    RecordingBackend::Calls calls;
+    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 30, 17);
+    session.setPreviewDivisor(4);
+    session.renderPasses(1);
+    EXPECT_EQ(calls.width, 8u);  // rounded up
+    EXPECT_EQ(calls.height, 5u);
+    EXPECT_EQ(calls.lastFrame.camera.width, 8u);
+    EXPECT_EQ(session.renderWidth(), 30u);  // the full size is kept for screenshots and the display
+    session.setPreviewDivisor(1);
+    session.renderPasses(1);
+    EXPECT_EQ(calls.width, 30u);
+    EXPECT_EQ(calls.height, 17u);
+    EXPECT_EQ(session.passes(), 1u);
+}
+
+TEST(ViewerSessionTest, BatchesRunOnTheWorkerAndErrorsReachTheCaller) {
+    RecordingBackend::Calls calls;
+    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 8, 8);
+    std::atomic<int> done{0};
+    session.setOnBatchDone([&] { ++done; });
+    session.startPasses(5);
+    session.waitIdle();
+    EXPECT_FALSE(session.busy());
+    EXPECT_EQ(session.passes(), 5u);
+    EXPECT_EQ(calls.passes, 5u);
+    EXPECT_EQ(done.load(), 1);
+    EXPECT_GE(session.passesForBudget(1e9), 1u);
+
+    RecordingBackend::Calls failing;
+    ViewerSession broken(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(failing, true), 0, 8, 8);
+    broken.startPasses(1);
+    EXPECT_THROW(broken.waitIdle(), std::runtime_error);
+}
+
+// The viewer's passes, in any batching, accumulate exactly what the headless render does.
+TEST(ViewerSessionTest, BatchedPassesEqualTheHeadlessRender) {
+    const Scene scene = readScene("scenes/scene1_area.scene");
+    ViewerSession session(scene, createCpuBackend(2), 7, 24, 16);
+    for (uint32_t batch : {1u, 2u, 5u, 3u}) session.renderPasses(batch);
+    ASSERT_EQ(session.passes(), 11u);
+    const std::vector<Vec3> viewer = session.image();
+
+    std::unique_ptr<Backend> headless = createCpuBackend(1);
+    const FlattenResult flat = flatten(scene);
+    headless->upload(flat.arrays);
+    headless->resize(24, 16);
+    RenderLimits limits;
+    limits.passes = 11;
+    limits.cyclePasses = cyclePassesFor(flat.arrays, false);
+    renderProgressive(*headless, makeFrameParams(scene, 24, 16, 7), limits);
+    const std::vector<Vec3> reference = readImage(*headless);
+    ASSERT_EQ(viewer.size(), reference.size());
+    EXPECT_EQ(std::memcmp(viewer.data(), reference.data(), viewer.size() * sizeof(Vec3)), 0);
+}
+
+// An edit changes the image; undoing it and restarting gives the first image back bit for bit.
+TEST(ViewerSessionTest, EditChangesTheImageAndUndoRestoresIt) {
+    ViewerSession session(readScene("scenes/scene1_area.scene"), createCpuBackend(2), 0, 24, 16);
+    session.renderPasses(4);
+    const std::vector<Vec3> before = session.image();
+    const Vec3 white = session.scene().materials[0].diffuseColor;
+    session.scene().materials[0].diffuseColor = Vec3(0.1f, 0.1f, 0.9f);
+    session.markDirty(kDirtyScene);
+    session.renderPasses(4);
+    const std::vector<Vec3> edited = session.image();
+    EXPECT_NE(std::memcmp(before.data(), edited.data(), before.size() * sizeof(Vec3)), 0);
+    session.scene().materials[0].diffuseColor = white;
+    session.markDirty(kDirtyScene);
+    session.renderPasses(4);
+    const std::vector<Vec3> undone = session.image();
+    EXPECT_EQ(std::memcmp(before.data(), undone.data(), before.size() * sizeof(Vec3)), 0);
+}
+
+}  // namespace
+}  // namespace trazo
