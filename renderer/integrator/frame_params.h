@@ -12,12 +12,11 @@ struct FrameParams {
     uint32_t seed = 0;
     // The thesis's estimator (--fixed-grid): every pass evaluates every stratum of every grid instead of one.
     bool fixedGrid = false;
+    // Passes alternate between the accumulation's two halves in blocks of this many (0: no second half);
+    // progressive_render.h chooses it so both halves are equally stratified.
+    uint32_t halfBlock = 0;
+    TRAZO_HD bool inSecondHalf(uint32_t pass) const { return halfBlock != 0 && ((pass / halfBlock) & 1u); }
 };
-
-// A pass index with this bit set accumulates into the second half as well (see AccumPixel). The host
-// chooses which passes those are (progressive_render.h: kernelPassIndex), so the split can follow the
-// scene's strata; kernels treat the index like any other (strata and jitter are keyed by it).
-constexpr uint32_t kSecondHalfPassBit = 1u << 31;
 
 // Accumulation per pixel: float RGB sums and the number of samples added. `sum`/`count` hold every sample
 // (the image is sum / count); `sumB`/`countB` hold the samples of second-half passes only, so the first half
@@ -27,10 +26,10 @@ struct AccumPixel {
     float count;
     Vec3 sumB;
     float countB;
-    TRAZO_HD void add(Vec3 sample, uint32_t pass) {
+    TRAZO_HD void add(Vec3 sample, bool secondHalf) {
         sum += sample;
         count += 1.0f;
-        if (pass & kSecondHalfPassBit) {
+        if (secondHalf) {
             sumB += sample;
             countB += 1.0f;
         }

@@ -37,10 +37,10 @@ TEST(ErrorEstimate, UnavailableWithOneHalfEmpty) {
     EXPECT_NEAR(e.meanValue, 1.0, 1e-12);
 }
 
-TEST(ErrorEstimate, AddSplitsOnTheSecondHalfBit) {
+TEST(ErrorEstimate, AddSplitsIntoTheSecondHalf) {
     AccumPixel p{};
-    p.add(Vec3(1.0f), 5);
-    p.add(Vec3(2.0f), 5u | kSecondHalfPassBit);
+    p.add(Vec3(1.0f), false);
+    p.add(Vec3(2.0f), true);
     EXPECT_EQ(p.count, 2.0f);
     EXPECT_EQ(p.sum.x, 3.0f);
     EXPECT_EQ(p.countB, 1.0f);
@@ -56,8 +56,7 @@ TEST(ErrorEstimate, CompareToReference) {
     EXPECT_NEAR(r.relMse, 0.36 / 9.01 / 6, 1e-6);
 }
 
-// Over every 2·cycle passes each half takes every stratum of every grid (N | cycle) equally often, and the
-// kernel index keeps the stratum: kernelPassIndex(v) ≡ v (mod cycle).
+// Over every 2·cycle passes each half takes every stratum of every grid (N | cycle) equally often.
 TEST(HalfSplit, BalancedOverTwoCyclesForEveryGrid) {
     for (uint32_t cycle : {1u, 2u, 12u, 16u, 18u, 100u, 200u, 800u, 1536u}) {
         EXPECT_EQ(cycle % halfBlockPasses(cycle), 0u);
@@ -67,12 +66,9 @@ TEST(HalfSplit, BalancedOverTwoCyclesForEveryGrid) {
             std::vector<int> balance(n, 0);
             for (uint32_t offset : {0u, 7u}) {
                 std::fill(balance.begin(), balance.end(), 0);
-                for (uint32_t v = 0; v < 2 * cycle; ++v) {
-                    const uint32_t k = kernelPassIndex(v, cycle);
-                    ASSERT_EQ(k % cycle, v % cycle);
-                    ASSERT_EQ((k & kSecondHalfPassBit) != 0, inSecondHalf(v, cycle));
-                    balance[(offset + v) % n] += inSecondHalf(v, cycle) ? 1 : -1;
-                }
+                FrameParams frame{};
+                frame.halfBlock = halfBlockPasses(cycle);
+                for (uint32_t v = 0; v < 2 * cycle; ++v) balance[(offset + v) % n] += frame.inSecondHalf(v) ? 1 : -1;
                 for (uint32_t s = 0; s < n; ++s) ASSERT_EQ(balance[s], 0) << "cycle " << cycle << " grid " << n;
             }
         }
@@ -89,14 +85,14 @@ public:
     void upload(const SceneArrays&) override {}
     void resize(uint32_t, uint32_t) override {}
     void reset() override { std::fill(accum_.begin(), accum_.end(), AccumPixel{}); }
-    void renderPasses(const FrameParams&, uint32_t firstPass, uint32_t passCount) override {
+    void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override {
         for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
             for (uint32_t i = 0; i < accum_.size(); ++i) {
                 const uint32_t s = stratumForPass(3, i, 0, pass, strata_);
                 SampleStream rng(3, i, pass);
                 const float u = (s + rng.next()) / strata_;
                 const float noise = noise_ * (rng.next() + rng.next() + rng.next() - 1.5f) * 2.0f;
-                accum_[i].add(Vec3(value(i, u) + noise), pass);
+                accum_[i].add(Vec3(value(i, u) + noise), frame.inSecondHalf(pass));
             }
         }
         ++calls;

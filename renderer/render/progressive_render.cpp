@@ -14,11 +14,6 @@ namespace {
 
 constexpr double kBatchSeconds = 0.2;
 
-uint64_t secondHalfOffset(uint32_t cyclePasses) {
-    const uint64_t cycle = std::max(cyclePasses, 1u);
-    return ((uint64_t(kSecondHalfPassBit) + cycle - 1) / cycle) * cycle;  // >= 2^31, ≡ 0 mod cycle
-}
-
 uint64_t roundUp(uint64_t v, uint64_t step) { return (v + step - 1) / step * step; }
 
 }  // namespace
@@ -26,27 +21,14 @@ uint64_t roundUp(uint64_t v, uint64_t step) { return (v + step - 1) / step * ste
 bool splitsHalves(uint32_t cyclePasses) { return cyclePasses > 0 && cyclePasses < kMaxCyclePasses; }
 
 uint32_t halfBlockPasses(uint32_t cyclePasses) {
-    if (!splitsHalves(cyclePasses)) return kMaxProgressivePasses;
-    return cyclePasses & (~cyclePasses + 1u);
-}
-
-bool inSecondHalf(uint32_t pass, uint32_t cyclePasses) {
-    return splitsHalves(cyclePasses) && ((pass / halfBlockPasses(cyclePasses)) & 1u);
-}
-
-uint32_t kernelPassIndex(uint32_t pass, uint32_t cyclePasses) {
-    return inSecondHalf(pass, cyclePasses) ? uint32_t(pass + secondHalfOffset(cyclePasses)) : pass;
+    return splitsHalves(cyclePasses) ? cyclePasses & (~cyclePasses + 1u) : 0u;  // lowest set bit
 }
 
 void renderPassRange(Backend& backend, const FrameParams& frame, uint32_t firstPass, uint32_t count,
                      uint32_t cyclePasses) {
-    const uint32_t block = halfBlockPasses(cyclePasses);
-    const uint32_t end = firstPass + count;
-    for (uint32_t v = firstPass; v < end;) {
-        const uint32_t runEnd = std::min(end, (v / block + 1) * block);  // one block: one half, contiguous
-        backend.renderPasses(frame, kernelPassIndex(v, cyclePasses), runEnd - v);
-        v = runEnd;
-    }
+    FrameParams split = frame;
+    split.halfBlock = halfBlockPasses(cyclePasses);
+    backend.renderPasses(split, firstPass, count);
 }
 
 RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, const RenderLimits& limits,

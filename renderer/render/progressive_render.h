@@ -12,21 +12,16 @@ namespace trazo {
 
 // The two halves (AccumPixel::sumB). Passes v = 0, 1, 2, … alternate between the halves in blocks of
 // halfBlockPasses(cycle) passes, the largest power of two dividing the scene's full cycle. Every grid has
-// N | cycle strata and pass v takes stratum (offset + v) mod N, so over any 2·cycle passes from 0 each half
-// takes every stratum of every grid equally often (the block length absorbs N's factor 2^a, and the odd part
-// of N is covered because blocks of one half start 2·block apart and 2 is invertible modulo an odd number).
-// Both halves are then equally stratified, independent estimates and their difference measures the error of
-// the whole (error_estimate.h). At other pass counts the halves hold unequal strata and the estimate is rough:
-// below one cycle both halves see the same run of strata and it reads low (about half the true error on an
-// area light); at odd multiples of the cycle it reads high.
+// N | cycle strata and pass v takes stratum σ(v mod N) (σ a per-pixel permutation), so over any 2·cycle
+// passes from 0 each half takes every stratum of every grid equally often (the block length absorbs N's
+// factor 2^a; passes v and v + N fall in different halves because N / block is odd). Both halves are then
+// equally stratified, independent estimates and their difference measures the error of the whole
+// (error_estimate.h). At other pass counts the halves hold unequal sets of strata and the estimate is rough.
 // cyclePasses = 0 (the default), or a cycle that hit kMaxCyclePasses (then not every grid divides it), makes
-// no halves: every pass runs as itself and nothing can be estimated.
+// no halves and nothing can be estimated. The split only decides which half a sample is added to: the image
+// (sum / count) is the same as without it.
 bool splitsHalves(uint32_t cyclePasses);
-uint32_t halfBlockPasses(uint32_t cyclePasses);
-bool inSecondHalf(uint32_t pass, uint32_t cyclePasses);
-// The index the kernels see for pass v: v itself in the first half; in the second, v plus a multiple of the
-// cycle that sets kSecondHalfPassBit (same strata, other jitter). Valid for v < kMaxProgressivePasses.
-uint32_t kernelPassIndex(uint32_t pass, uint32_t cyclePasses);
+uint32_t halfBlockPasses(uint32_t cyclePasses);  // FrameParams::halfBlock; 0 when there are no halves
 constexpr uint32_t kMaxProgressivePasses = 1u << 30;
 
 struct RenderLimits {
@@ -35,8 +30,8 @@ struct RenderLimits {
     double targetError = 0.0;  // and once estimateError(...).relError <= this, when > 0
     // The scene's full cycle (cyclePassesFor: fullCyclePasses, or 1 with FrameParams::fixedGrid, where every
     // pass is complete): sets the half split, and the target error is checked only at multiples of
-    // 2·cyclePasses, where the estimate is unbiased (and a stratified image is at its best). 0: no halves,
-    // every pass runs under its own index (as a plain renderPasses loop would) and no target error.
+    // 2·cyclePasses, where the estimate is unbiased (and a stratified image is at its best). 0: no halves
+    // and no target error.
     uint32_t cyclePasses = 0;
 };
 
@@ -58,7 +53,7 @@ struct RenderOutcome {
 RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, const RenderLimits& limits,
                                 const std::function<void(const RenderProgress&)>& onProgress = {});
 
-// Adds passes [firstPass, firstPass + count) of the numbering above (each half through its kernel indices).
+// Adds passes [firstPass, firstPass + count), each to its half of the split for cyclePasses.
 void renderPassRange(Backend& backend, const FrameParams& frame, uint32_t firstPass, uint32_t count,
                      uint32_t cyclePasses);
 
