@@ -142,13 +142,34 @@ RaySets makeRays(const TriangleScene& scene) {
     return sets;
 }
 
-void benchScene(const char* name, std::vector<Vec3> triangles, unsigned threads) {
+// Command-line choices that shorten an iteration: a subset of scenes and ray kinds, every k-th ray, and
+// best-of-R timing with Trazo and Embree interleaved (on a loaded machine, both see the same noise).
+struct BenchOptions {
+    unsigned threads = 1;
+    size_t rays = 0;         // 0 = all; else about this many per kind, taken at an even stride
+    const char* only = "";   // "" = all kinds, else primary, shadow or random
+    const char* scene = "";  // "" = both, else bunny or sphere
+    int repeat = 1;
+    bool build = true;       // time the builds (the 1M-triangle ones take seconds)
+};
+
+std::vector<Query> subsample(const std::vector<Query>& all, size_t count) {
+    if (count == 0 || count >= all.size()) return all;
+    std::vector<Query> out;
+    const double stride = (double)all.size() / (double)count;
+    for (size_t k = 0; k < count; ++k) out.push_back(all[(size_t)(k * stride)]);
+    return out;
+}
+
+void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOptions& opt) {
+    const unsigned threads = opt.threads;
     TriangleScene scene;
     scene.triangles = std::move(triangles);
     const std::vector<Aabb> bounds = boundsOf(scene.triangles);
     const uint32_t count = (uint32_t)bounds.size();
     const int runs = count > 200000 ? 2 : 5;
-    const double build1 = timeBuild(bounds, 1, runs), buildN = timeBuild(bounds, threads, runs);
+    const double build1 = opt.build ? timeBuild(bounds, 1, runs) : 0.0,
+                 buildN = opt.build ? timeBuild(bounds, threads, runs) : 0.0;
     BvhBuildOptions options;
     options.threads = threads;
     scene.bvh = buildBvh(bounds, options);
@@ -178,22 +199,33 @@ void benchScene(const char* name, std::vector<Vec3> triangles, unsigned threads)
     std::printf("%-8s %9s %8s | %12s %12s\n", "rays", "count", "hit %", "Trazo 1T", "Trazo NT");
 #endif
     for (const Kind& k : kinds) {
-        const std::vector<Query>& rays = *k.rays;
+        if (*opt.only && std::strcmp(opt.only, k.name)) continue;
+        const std::vector<Query> rays = subsample(*k.rays, opt.rays);
         std::vector<float> result(rays.size());
         auto trace = [&](size_t i) {
             const Query& q = rays[i];
             result[i] = k.shadow ? (float)scene.occluded(q.ray, q.tMin, q.tMax) : scene.intersect(q.ray, q.tMin, q.tMax);
         };
-        const double t1 = parallelFor(rays.size(), 1, trace), tN = parallelFor(rays.size(), threads, trace);
+        double t1 = 1e30, tN = 1e30;
+#if TRAZO_HAVE_EMBREE
+        double te = 1e30;
+        std::vector<float> theirs(rays.size());
+        auto traceEmbree = [&](size_t i) {
+            const Query& q = rays[i];
+            theirs[i] = k.shadow ? (float)embree1.occluded(q.ray, q.tMin, q.tMax) : embree1.intersect(q.ray, q.tMin, q.tMax);
+        };
+#endif
+        for (int r = 0; r < opt.repeat; ++r) {
+            t1 = std::min(t1, parallelFor(rays.size(), 1, trace));
+#if TRAZO_HAVE_EMBREE
+            te = std::min(te, parallelFor(rays.size(), 1, traceEmbree));
+#endif
+        }
+        for (int r = 0; r < opt.repeat; ++r) tN = std::min(tN, parallelFor(rays.size(), threads, trace));
         size_t hits = 0;
         for (float r : result) hits += k.shadow ? r != 0.0f : std::isfinite(r);
         const double mr1 = rays.size() / t1 * 1e-6, mrN = rays.size() / tN * 1e-6;
 #if TRAZO_HAVE_EMBREE
-        std::vector<float> theirs(rays.size());
-        const double te = parallelFor(rays.size(), 1, [&](size_t i) {
-            const Query& q = rays[i];
-            theirs[i] = k.shadow ? (float)embree1.occluded(q.ray, q.tMin, q.tMax) : embree1.intersect(q.ray, q.tMin, q.tMax);
-        });
         size_t agree = 0;
         for (size_t i = 0; i < rays.size(); ++i)
             agree += k.shadow ? (result[i] != 0.0f) == (theirs[i] != 0.0f) : std::isfinite(result[i]) == std::isfinite(theirs[i]);
@@ -209,14 +241,27 @@ void benchScene(const char* name, std::vector<Vec3> triangles, unsigned threads)
 }  // namespace
 
 int main(int argc, char** argv) {
-    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    BenchOptions opt;
+    opt.threads = std::max(1u, std::thread::hardware_concurrency());
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) threads = (unsigned)std::max(1, std::atoi(argv[++i]));
+        const bool more = i + 1 < argc;
+        if (!std::strcmp(argv[i], "--threads") && more) opt.threads = (unsigned)std::max(1, std::atoi(argv[++i]));
+        else if (!std::strcmp(argv[i], "--rays") && more) opt.rays = (size_t)std::max(0, std::atoi(argv[++i]));
+        else if (!std::strcmp(argv[i], "--only") && more) opt.only = argv[++i];
+        else if (!std::strcmp(argv[i], "--scene") && more) opt.scene = argv[++i];
+        else if (!std::strcmp(argv[i], "--repeat") && more) opt.repeat = std::max(1, std::atoi(argv[++i]));
+        else if (!std::strcmp(argv[i], "--no-build")) opt.build = false;
         else {
-            std::fprintf(stderr, "usage: bvh_bench [--threads N]\n");
+            std::fprintf(stderr,
+                         "usage: bvh_bench [--threads N] [--rays N] [--only primary|shadow|random] [--scene bunny|sphere]\n"
+                         "                 [--repeat R] [--no-build]\n"
+                         "  --rays N     about N rays per kind (an even stride through the full set)\n"
+                         "  --repeat R   best of R timings, Trazo and Embree interleaved\n"
+                         "  --no-build   skip the build timings\n");
             return 2;
         }
     }
+    const unsigned threads = opt.threads;
     std::printf("bvh_bench: %u threads (1T = one thread, NT = %u threads)\n", threads, threads);
 #if !TRAZO_HAVE_EMBREE
     std::printf("Embree not found: comparison skipped\n");
@@ -225,15 +270,18 @@ int main(int argc, char** argv) {
     const std::string bunnyPath = std::string(TRAZO_SOURCE_DIR) + "/scenes/assets/bunny.obj";
     Diagnostics diags;
     const auto mesh = readObjFile(bunnyPath, diags);
-    if (mesh) {
+    if (*opt.scene && std::strcmp(opt.scene, "bunny")) {
+        // skipped
+    } else if (mesh) {
         std::vector<Vec3> tris;
         for (const auto& corner : mesh->corners) tris.push_back(mesh->positions[corner.position]);
-        benchScene("bunny (scenes/assets/bunny.obj)", std::move(tris), threads);
+        benchScene("bunny (scenes/assets/bunny.obj)", std::move(tris), opt);
     } else {
         std::printf("\n%s is missing or unreadable: make it with scenes/assets/make_bunny.sh\n", bunnyPath.c_str());
     }
     // 2·708·707 = 1,001,112 triangles, displaced so the surface is not a plain sphere.
-    benchScene("bumpy sphere (tessellateSphere, 708 rings x 708 segments)",
-               tessellateSphere({0, 0, 0}, 1.0f, 708, 708, 0.08f), threads);
+    if (!*opt.scene || !std::strcmp(opt.scene, "sphere"))
+        benchScene("bumpy sphere (tessellateSphere, 708 rings x 708 segments)",
+                   tessellateSphere({0, 0, 0}, 1.0f, 708, 708, 0.08f), opt);
     return 0;
 }

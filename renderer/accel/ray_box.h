@@ -18,19 +18,24 @@ TRAZO_HD BoxRay makeBoxRay(const Ray& ray) {
 // in (pbrt-v4, Bounds3::IntersectP), and lets a box whose entry ties tMax within rounding still be visited.
 constexpr float kBoxExitScale = 1.0f + 2.0f * 3.0f * 0.5f * 1.1920929e-7f / (1.0f - 3.0f * 0.5f * 1.1920929e-7f);
 
+// One axis of the slab test: narrows [t0, t1] to where the ray is between the planes `lo` and `hi`, taken
+// in the order the ray crosses them (negative: hi first). A zero direction component gives (b − o)·inf: ±inf,
+// or NaN when the origin lies on that plane; the comparisons ignore a NaN (they keep the running bound), so
+// a ray parallel to a slab is kept exactly when it lies inside or on it.
+TRAZO_HD void narrowSlab(float lo, float hi, float origin, float invDirection, float& t0, float& t1) {
+    const bool negative = invDirection < 0.0f;
+    const float tNear = ((negative ? hi : lo) - origin) * invDirection;
+    const float tFar = ((negative ? lo : hi) - origin) * invDirection;
+    t0 = tNear > t0 ? tNear : t0;
+    t1 = tFar < t1 ? tFar : t1;
+}
+
 // Whether the ray meets the closed box [boundsMin, boundsMax] within [tMin, tMax]; tEntry = where it enters.
-// Slab planes are picked by the direction's sign, so a zero component gives (b − o)·inf: ±inf, or NaN when
-// the origin lies on that plane. The comparisons below ignore a NaN (they keep the running bound), so a ray
-// parallel to a slab is kept exactly when it lies inside or on it.
 TRAZO_HD bool intersectBounds(const BoxRay& r, Vec3 boundsMin, Vec3 boundsMax, float tMin, float tMax, float& tEntry) {
     float t0 = tMin, t1 = tMax;
-    for (int a = 0; a < 3; ++a) {
-        const bool negative = r.invDirection[a] < 0.0f;
-        const float tNear = ((negative ? boundsMax[a] : boundsMin[a]) - r.origin[a]) * r.invDirection[a];
-        const float tFar = ((negative ? boundsMin[a] : boundsMax[a]) - r.origin[a]) * r.invDirection[a];
-        t0 = tNear > t0 ? tNear : t0;
-        t1 = tFar < t1 ? tFar : t1;
-    }
+    narrowSlab(boundsMin.x, boundsMax.x, r.origin.x, r.invDirection.x, t0, t1);
+    narrowSlab(boundsMin.y, boundsMax.y, r.origin.y, r.invDirection.y, t0, t1);
+    narrowSlab(boundsMin.z, boundsMax.z, r.origin.z, r.invDirection.z, t0, t1);
     tEntry = t0;
     return t0 <= t1 * kBoxExitScale;
 }
