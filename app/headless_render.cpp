@@ -7,6 +7,7 @@
 
 #include "device/flatten.h"
 #include "image/image_writer.h"
+#include "io/text_file.h"
 #include "progress_bar.h"
 #include "render/error_estimate.h"
 #include "render/frame_setup.h"

@@ -85,25 +85,4 @@ std::string formatStatsJson(const RenderStats& s) {
     return j + "}\n";
 }
 
-bool writeTextFileAtomically(const std::string& path, const std::string& text, std::string& error) {
-    const std::string temp = path + ".tmp-trazo";
-    {
-        std::ofstream f(temp, std::ios::binary);
-        if (!(f << text) || !f.flush()) {
-            error = "cannot write " + path + ": " + std::strerror(errno);
-            f.close();
-            std::remove(temp.c_str());
-            return false;
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temp, path, ec);
-    if (ec) {
-        error = "cannot write " + path + ": " + ec.message();
-        std::remove(temp.c_str());
-        return false;
-    }
-    return true;
-}
-
 }  // namespace trazo

@@ -28,7 +28,5 @@ struct RenderStats {
 
 std::string formatStatsSummary(const RenderStats& s);  // human-readable, a few lines
 std::string formatStatsJson(const RenderStats& s);
-// Writes text to a temporary file beside `path`, then renames it into place.
-bool writeTextFileAtomically(const std::string& path, const std::string& text, std::string& error);
 
 }  // namespace trazo

@@ -2,11 +2,11 @@
 // objects that name them).
 #include "scene/scene_writer.h"
 
-#include <cerrno>
+#include "io/text_file.h"
+
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 namespace trazo {
 namespace {
@@ -174,33 +174,7 @@ private:
 std::string formatScene(const Scene& scene, const std::string& scenePath) { return Writer(scene, scenePath).write(); }
 
 bool writeSceneFile(const Scene& scene, const std::string& path, std::string& error) {
-    namespace fs = std::filesystem;
-    const std::string text = formatScene(scene, path);
-    const fs::path target(path);
-    const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp");
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (!file) {
-            error = "cannot write '" + temporary.string() + "': " + std::strerror(errno);
-            return false;
-        }
-        file << text;
-        file.close();
-        if (!file) {
-            error = "cannot write '" + temporary.string() + "'";
-            std::error_code ignored;
-            fs::remove(temporary, ignored);
-            return false;
-        }
-    }
-    std::error_code ec;
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        error = "cannot replace '" + path + "': " + ec.message();
-        fs::remove(temporary, ec);
-        return false;
-    }
-    return true;
+    return writeTextFileAtomically(path, formatScene(scene, path), error);
 }
 
 }  // namespace trazo
