@@ -1,12 +1,8 @@
 // Formatting of render statistics as text and JSON.
 #include "render_stats.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 
 namespace trazo {
 

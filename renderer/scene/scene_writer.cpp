@@ -5,7 +5,6 @@
 #include "io/text_file.h"
 
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 
 namespace trazo {
