@@ -11,7 +11,9 @@ namespace trazo {
 bool writeTextFileAtomically(const std::string& path, const std::string& text, std::string& error) {
     namespace fs = std::filesystem;
     const fs::path target(path);
-    const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp-trazo");
+    std::string hidden = target.filename().string();
+    hidden.insert(hidden.begin(), '.');  // (not "." + …: GCC 12 warns falsely on that with -O2)
+    const fs::path temporary = target.parent_path() / (hidden + ".tmp-trazo");
     std::error_code ec;
     {
         std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
