@@ -128,9 +128,9 @@ Aabb objectBounds(const SceneArrays& a, const ObjectRef& o) {
             b.grow(a.meshNodes[a.meshes[o.index].nodeOffset].boundsMax);
             break;
     }
+    if (b.empty()) return Aabb{Vec3(0.0f), Vec3(0.0f)};  // an empty CSG solid: never hit anyway
     // A little slack: the shapes' own tests are exact, the box test must never be the one that misses.
     const Vec3 pad = abs(b.max - b.min) * 1e-5f + abs(b.min) * 1e-6f + abs(b.max) * 1e-6f;
-    if (b.empty()) return Aabb{Vec3(0.0f), Vec3(0.0f)};  // an empty CSG solid: never hit anyway
     return Aabb{b.min - pad, b.max + pad};
 }
 
