@@ -23,10 +23,6 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-void printDiagnostics(const Diagnostics& diags) {
-    for (const Diagnostic& d : diags.items) std::fprintf(stderr, "%s\n", formatDiagnostic(d).c_str());
-}
-
 }  // namespace
 
 int runHeadlessRender(const CommandLine& options) {

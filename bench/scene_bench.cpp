@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
         Diagnostics diags;
         const Scene scene = readSceneFile(path, diags);
         if (diags.hasErrors()) {
-            for (const auto& d : diags.items) std::fprintf(stderr, "%s\n", formatDiagnostic(d).c_str());
+            printDiagnostics(diags);
             return 2;
         }
         const FlattenResult flat = flatten(scene);

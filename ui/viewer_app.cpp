@@ -383,10 +383,6 @@ private:
     Clock::time_point lastDragFrame_{};
 };
 
-void printDiagnostics(const Diagnostics& diags) {
-    for (const Diagnostic& d : diags.items) std::fprintf(stderr, "%s\n", formatDiagnostic(d).c_str());
-}
-
 }  // namespace
 
 int runViewer(const ViewerOptions& options) {

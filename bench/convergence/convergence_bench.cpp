@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
 
     Diagnostics diags;
     const Scene scene = readSceneFile(o.scene, diags);
-    for (const Diagnostic& d : diags.items) std::fprintf(stderr, "%s\n", formatDiagnostic(d).c_str());
+    printDiagnostics(diags);
     if (diags.hasErrors()) return 2;
     const FlattenResult flat = flatten(scene);
     const uint32_t width = o.width ? o.width : (uint32_t)scene.settings.renderWidth;

@@ -1,6 +1,8 @@
 // Formatting of diagnostics as FILE:LINE[:COLUMN]: severity: reason (hint).
 #include "scene/diagnostic.h"
 
+#include <cstdio>
+
 namespace trazo {
 
 std::string formatDiagnostic(const Diagnostic& d) {
@@ -17,6 +19,10 @@ std::string formatDiagnostic(const Diagnostic& d) {
     s += d.message;
     if (!d.hint.empty()) s += " (" + d.hint + ")";
     return s;
+}
+
+void printDiagnostics(const Diagnostics& diags) {
+    for (const Diagnostic& d : diags.items) std::fprintf(stderr, "%s\n", formatDiagnostic(d).c_str());
 }
 
 }  // namespace trazo

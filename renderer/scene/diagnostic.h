@@ -40,4 +40,7 @@ struct Diagnostics {
     }
 };
 
+// Every item, formatted, one per line on stderr.
+void printDiagnostics(const Diagnostics& diags);
+
 }  // namespace trazo
