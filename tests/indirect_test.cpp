@@ -93,5 +93,28 @@ TEST(IndirectLight, NoNanOrInfUnderExtremeSettings) {
     }
 }
 
+// Indirect light meets an area light at each point Q: one grid's cell is paired with another's. Within a
+// strata window the pairing is fixed, so an estimate that never re-pairs converges to a seed-dependent value;
+// with windows (as the CLI renders) two seeds keep converging towards each other.
+TEST(IndirectLight, TwoSeedsConvergeTogetherAcrossStrataWindows) {
+    const std::string scene =
+        "SceneSettings\n{\nRenderWidth 12\nRenderHeight 12\nReflectionQuality 0\nIndirectQuality 2\n"
+        "ColorBleeding 4\n}\n"
+        "Camera\n{\nPOV 0 1 4\nPOI 0 0 0\nFOV 50\n}\n"
+        "Material\n{\nName m\nDiffuseColor 0.8 0.8 0.8\nSpecularColor 0 0 0\nRoughness 0\n}\n"
+        "Box\n{\nMaterial m\nTranslation 0 -0.5 0\nScale 6 1 6\n}\n"
+        "Box\n{\nMaterial m\nTranslation 0 0.5 -1.5\nScale 3 2 0.2\n}\n"
+        "AreaLight\n{\nPosition 0 1.2 0.5\nDirection 0 -1 0\nWidth 3\nHeight 3\nSubdivision 2 2\nColor 1 1 1\n}\n";
+    auto seedDifference = [&](bool windows, uint32_t passes) {
+        const RenderedImage a = renderSceneText(scene, {.passes = passes, .seed = 1, .cycleAware = windows});
+        const RenderedImage b = renderSceneText(scene, {.passes = passes, .seed = 2, .cycleAware = windows});
+        return rmse(a, b);
+    };
+    const uint32_t cycle = 8;  // lcm(2·2² indirect strata, 2×2 light cells)
+    const double fixedPairing = seedDifference(false, 64 * cycle);
+    const double windowed = seedDifference(true, 64 * cycle);
+    EXPECT_LT(windowed, 0.6 * fixedPairing) << "fixed pairing " << fixedPairing << ", windowed " << windowed;
+}
+
 }  // namespace
 }  // namespace trazo

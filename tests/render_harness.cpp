@@ -38,6 +38,7 @@ RenderedImage renderScene(const Scene& scene, const Diagnostics& diags, const Re
     frame.fixedGrid = request.fixedGrid;
     RenderLimits limits;
     limits.passes = request.passes;
+    if (request.cycleAware) limits.cyclePasses = cyclePassesFor(flat.arrays, request.fixedGrid);
     image.rays = renderProgressive(*backend, frame, limits).rays;
     image.pixels = readImage(*backend);
     return image;

@@ -24,6 +24,7 @@ struct RenderRequest {
     bool allFeatures = false;  // run the all-features instance of renderSample (the oracle)
     int width = 0, height = 0;  // 0: the scene's RenderWidth/RenderHeight
     bool fixedGrid = false;     // the thesis's estimator: every stratum in every pass
+    bool cycleAware = false;    // render as the CLI does: halves and strata windows from the scene's cycle
 };
 
 // Fails the current test (ADD_FAILURE) and returns an empty image when the scene does not read.

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "core/rng.h"
 #include "integrator/camera_frame.h"
 
 namespace trazo {
@@ -16,6 +17,15 @@ struct FrameParams {
     // progressive_render.h chooses it so both halves are equally stratified.
     uint32_t halfBlock = 0;
     TRAZO_HD bool inSecondHalf(uint32_t pass) const { return halfBlock != 0 && ((pass / halfBlock) & 1u); }
+    // Every this many passes (a multiple of every grid's size; 0: never) each grid draws a new visiting order.
+    // Within a window the grids keep their orders, so which cell of one grid meets which cell of another
+    // (a light cell at Q with an indirect direction, say) is fixed; new windows re-pair them, so the estimate
+    // converges to the exact integral over all pairings instead of the mean over one pairing.
+    uint32_t strataWindow = 0;
+    TRAZO_HD uint32_t strataSeed(uint32_t pass) const {
+        const uint32_t window = strataWindow != 0 ? pass / strataWindow : 0u;
+        return window == 0 ? seed : hashCombine(seed, window);
+    }
 };
 
 // Accumulation per pixel: float RGB sums and the number of samples added. `sum`/`count` hold every sample

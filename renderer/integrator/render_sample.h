@@ -139,7 +139,7 @@ TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uin
                            uint32_t pass, uint32_t& rays) {
     const uint32_t pixelIndex = py * frame.camera.width + px;
     SampleStream rng(frame.seed, pixelIndex, pass);
-    const StrataKey pixelStrata{frame.seed, pixelIndex, pass, 1u, frame.fixedGrid};
+    const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, 1u, frame.fixedGrid};
     const uint32_t k = antialiasingSide(scene.settings.antialiasing);
     uint32_t first, visited;
     pixelStrata.strata(kGridAntialiasing, k * k, first, visited);

@@ -28,6 +28,8 @@ void renderPassRange(Backend& backend, const FrameParams& frame, uint32_t firstP
                      uint32_t cyclePasses) {
     FrameParams split = frame;
     split.halfBlock = halfBlockPasses(cyclePasses);
+    // Two cycles per window: the halves stay equally stratified within each (see progressive_render.h).
+    split.strataWindow = splitsHalves(cyclePasses) ? 2 * cyclePasses : 0u;
     backend.renderPasses(split, firstPass, count);
 }
 
