@@ -19,7 +19,10 @@ namespace trazo {
 // (error_estimate.h). At other pass counts the halves hold unequal sets of strata and the estimate is rough.
 // cyclePasses = 0 (the default), or a cycle that hit kMaxCyclePasses (then not every grid divides it), makes
 // no halves and nothing can be estimated. The split only decides which half a sample is added to: the image
-// (sum / count) is the same as without it.
+// (sum / count) is the same as without it. renderPassRange also sets FrameParams::strataWindow to 2·cycle:
+// each window re-draws every grid's order (re-pairing nested grids), and within a window the argument above
+// holds unchanged. Both halves of a window share its pairing, so the estimate leaves out the part of the
+// error that re-pairing removes over later windows; with one grid (or independent ones) that part is 0.
 bool splitsHalves(uint32_t cyclePasses);
 uint32_t halfBlockPasses(uint32_t cyclePasses);  // FrameParams::halfBlock; 0 when there are no halves
 constexpr uint32_t kMaxProgressivePasses = 1u << 30;
