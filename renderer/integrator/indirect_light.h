@@ -13,13 +13,6 @@ namespace trazo {
 constexpr uint32_t kGridIndirect = 2;
 constexpr uint32_t kBranchIndirect = 4;  // sample-tree branch of the points Q (their own light strata)
 
-// Shading point at a hit, with both normals turned towards the ray that found it.
-TRAZO_HD ShadingPoint facingShadingPoint(const Ray& ray, float t, const SurfacePoint& s) {
-    const bool front = dot(ray.direction, s.ng) < 0.0f;
-    return ShadingPoint{pointAt(ray, t), hitPointError(ray, t), front ? s.ng : -s.ng, front ? s.n : -s.n,
-                        -ray.direction};
-}
-
 template <FeatureMask F>
 TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
                             const StrataKey& strata, SampleStream& rng, uint32_t& rays) {
@@ -43,7 +36,7 @@ TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, cons
         MaterialData mq = scene.materials[o.material];
         SurfacePoint sq = surfaceAt(scene, o, hit, pointAt(ray, hit.t));
         applyTextures(scene, mq, sq);
-        const ShadingPoint spq = facingShadingPoint(ray, hit.t, sq);
+        const ShadingPoint spq = facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), w, sq);
         const Vec3 arriving = directLight<F>(scene, spq, mq, atQ, rng, rays) + mq.emissive;
         sum += m.diffuse * evalOrenNayar(sp.n, w, sp.v, m.roughness) * arriving;
     }

@@ -100,9 +100,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
             continue;
         }
 
-        // Normals turned to face the incoming ray (opaque insides, open surfaces).
-        const ShadingPoint sp{p, pError, frontFacing ? surface.ng : -surface.ng,
-                              frontFacing ? surface.n : -surface.n, -d};
+        const ShadingPoint sp = facingShadingPoint(p, pError, d, surface);
         const StrataKey strata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass, r.node,
                                pixelStrata.fixedGrid};
 

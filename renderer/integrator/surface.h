@@ -4,6 +4,7 @@
 #pragma once
 
 #include "geometry/surface_frame.h"
+#include "integrator/direct_light.h"
 #include "integrator/scene_intersect.h"
 
 namespace trazo {
@@ -68,6 +69,13 @@ TRAZO_HD void applyTextures(const SceneView& scene, MaterialData& m, SurfacePoin
         const Vec3 b = dot(cross(s.n, t), s.bitangent) < 0.0f ? -cross(s.n, t) : cross(s.n, t);
         s.n = perturbNormal(s.n, t, b, sampleTexture(scene.textures[m.normalTexture], texels, s.u, s.v));
     }
+}
+
+// The shading point at p for a ray along d, with both normals turned to face the ray (opaque insides,
+// open surfaces).
+TRAZO_HD ShadingPoint facingShadingPoint(Vec3 p, Vec3 pError, Vec3 d, const SurfacePoint& s) {
+    const bool front = dot(d, s.ng) < 0.0f;
+    return ShadingPoint{p, pError, front ? s.ng : -s.ng, front ? s.n : -s.n, -d};
 }
 
 }  // namespace trazo
