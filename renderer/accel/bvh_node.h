@@ -1,4 +1,5 @@
-// BvhNode: one 32-byte node of a bounding volume hierarchy as the kernels read it (host and device).
+// BvhNode: one 32-byte node of the binary BVH the builder makes (host); collapse_bvh.h turns it into the
+// four-wide nodes the kernels traverse.
 #pragma once
 
 #include <cstdint>
@@ -9,8 +10,6 @@ namespace trazo {
 
 // Leaves sit at depth ≤ kMaxBvhDepth (root = depth 0); the builder guarantees it for any input.
 constexpr uint32_t kMaxBvhDepth = 64;
-// Traversal pushes at most one node per interior ancestor of the current node, so one entry per level.
-constexpr int kBvhStackSize = (int)kMaxBvhDepth;
 
 struct BvhNode {
     Vec3 boundsMin;
@@ -18,6 +17,5 @@ struct BvhNode {
     Vec3 boundsMax;
     uint32_t primCount;     // 0 = interior node
 };
-static_assert(sizeof(BvhNode) == 32, "two sibling nodes should share a 64-byte cache line");
 
 }  // namespace trazo

@@ -11,6 +11,7 @@
 
 #include "accel/bvh_build.h"
 #include "accel/bvh_traverse.h"
+#include "accel/collapse_bvh.h"
 #include "core/rng.h"
 #include "geometry/intersect_triangle.h"
 #include "geometry/tessellate.h"
@@ -41,10 +42,12 @@ std::vector<Aabb> boundsOf(const std::vector<Vec3>& tris) {
 struct TriangleBvh {
     std::vector<Vec3> tris;
     Bvh bvh;
+    std::vector<WideBvhNode> nodes;  // what is traversed
     std::vector<Vec3> ordered;
 
     explicit TriangleBvh(std::vector<Vec3> t, BvhBuildOptions options = {}) : tris(std::move(t)) {
         bvh = buildBvh(boundsOf(tris), options);
+        nodes = collapseBvh(bvh);
         for (uint32_t id : bvh.primitiveOrder)
             ordered.insert(ordered.end(), {tris[3 * id], tris[3 * id + 1], tris[3 * id + 2]});
     }
@@ -54,7 +57,7 @@ struct TriangleBvh {
         const TriangleRay tr = makeTriangleRay(ray);
         const Vec3* p = ordered.data();
         uint32_t found = 0;
-        const bool any = traverseClosest(bvh.nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float& t) {
+        const bool any = traverseClosest(nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float& t) {
             bool h = false;
             for (uint32_t i = first; i < first + count; ++i) {
                 TriangleHit th;
@@ -74,7 +77,7 @@ struct TriangleBvh {
     bool occluded(const Ray& ray, float tMin, float tMax) const {
         const TriangleRay tr = makeTriangleRay(ray);
         const Vec3* p = ordered.data();
-        return traverseAny(bvh.nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float t) {
+        return traverseAny(nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float t) {
             for (uint32_t i = first; i < first + count; ++i) {
                 TriangleHit th;
                 if (intersectTriangle(tr, p[3 * i], p[3 * i + 1], p[3 * i + 2], tMin, t, th)) return true;
@@ -149,6 +152,63 @@ void expectValidStructure(const Bvh& bvh, const std::vector<Aabb>& bounds, uint3
     for (size_t i = 0; i < visits.size(); ++i) ASSERT_EQ(visits[i], 1u) << "node " << i << " unreachable or shared";
 }
 
+// The wide nodes of collapseBvh: every node reached once, every primitive position in exactly one leaf
+// (the binary leaves, unchanged), each child box holding every primitive below it, no deeper than the binary tree.
+void expectValidWideStructure(const Bvh& bvh, const std::vector<WideBvhNode>& nodes, const std::vector<Aabb>& bounds) {
+    const size_t n = bounds.size();
+    if (n == 0) {
+        EXPECT_TRUE(nodes.empty());
+        return;
+    }
+    ASSERT_FALSE(nodes.empty());
+    struct Item { uint32_t node, depth; };
+    std::vector<Item> stack{{0, 0}};
+    std::vector<uint32_t> covered(n, 0), visits(nodes.size(), 0);
+    uint32_t deepest = 0;
+    // The primitives below a reference (a leaf's range, or all leaves under a node).
+    auto primitivesBelow = [&](uint32_t ref, auto&& self, std::vector<uint32_t>& out) -> void {
+        if (bvhIsLeaf(ref)) {
+            for (uint32_t i = bvhLeafFirst(ref); i < bvhLeafFirst(ref) + bvhLeafCount(ref); ++i) out.push_back(i);
+            return;
+        }
+        for (uint32_t c : nodes[ref].child)
+            if (c != kBvhEmptyLane) self(c, self, out);
+    };
+    while (!stack.empty()) {
+        const Item it = stack.back();
+        stack.pop_back();
+        ASSERT_LT(it.node, nodes.size());
+        ++visits[it.node];
+        const WideBvhNode& node = nodes[it.node];
+        int used = 0;
+        for (int lane = 0; lane < kBvhWidth; ++lane) {
+            const uint32_t ref = node.child[lane];
+            if (ref == kBvhEmptyLane) {
+                EXPECT_GT(node.bounds[0][0][lane], node.bounds[0][1][lane]) << "an unused lane's box must be empty";
+                continue;
+            }
+            ASSERT_EQ(used++, lane) << "used lanes come first";
+            Aabb box;
+            box.min = Vec3(node.bounds[0][0][lane], node.bounds[1][0][lane], node.bounds[2][0][lane]);
+            box.max = Vec3(node.bounds[0][1][lane], node.bounds[1][1][lane], node.bounds[2][1][lane]);
+            std::vector<uint32_t> below;
+            primitivesBelow(ref, primitivesBelow, below);
+            for (uint32_t i : below) ASSERT_TRUE(box.contains(bounds[bvh.primitiveOrder[i]]));
+            if (bvhIsLeaf(ref)) {
+                deepest = std::max(deepest, it.depth + 1);
+                for (uint32_t i : below) ++covered[i];
+            } else {
+                stack.push_back({ref, it.depth + 1});
+            }
+        }
+        EXPECT_GE(used, 1);
+    }
+    for (size_t i = 0; i < n; ++i) ASSERT_EQ(covered[i], 1u) << "position " << i << " not in exactly one leaf";
+    for (size_t i = 0; i < visits.size(); ++i) ASSERT_EQ(visits[i], 1u) << "wide node " << i << " unreachable or shared";
+    EXPECT_EQ(deepest, wideBvhDepth(nodes));
+    EXPECT_LE(deepest, std::max(1u, bvhDepth(bvh)));
+}
+
 std::vector<Vec3> concat(std::vector<Vec3> a, const std::vector<Vec3>& b) {
     a.insert(a.end(), b.begin(), b.end());
     return a;
@@ -202,6 +262,7 @@ TEST(BvhBuild, StructureIsValidOnVariedMeshes) {
             const Bvh bvh = buildBvh(bounds, options);
             expectValidStructure(bvh, bounds, leaf);
             EXPECT_LE(bvhDepth(bvh), kMaxBvhDepth);
+            if (leaf <= kBvhMaxLeafSize) expectValidWideStructure(bvh, collapseBvh(bvh), bounds);
         }
     }
 }
@@ -212,6 +273,7 @@ TEST(BvhBuild, IdenticalTrianglesGiveABalancedTree) {
     const std::vector<Aabb> bounds = boundsOf(tris);
     const Bvh bvh = buildBvh(bounds);
     expectValidStructure(bvh, bounds, 4);
+    expectValidWideStructure(bvh, collapseBvh(bvh), bounds);
     // No SAH split exists, so every split is a median: ceil(log2(10000 / 4)) levels.
     EXPECT_LE(bvhDepth(bvh), 12u);
 }
@@ -234,6 +296,39 @@ TEST(BvhBuild, ExponentialSpacingStaysWithinMaxDepth) {
     expectValidStructure(bvh, bounds, 4);
     EXPECT_LE(bvhDepth(bvh), kMaxBvhDepth);
     EXPECT_GT(bvhDepth(bvh), 40u) << "input no longer pathological: the test checks nothing";
+    const std::vector<WideBvhNode> wide = collapseBvh(bvh);
+    expectValidWideStructure(bvh, wide, bounds);
+
+    // Traversal of the deep tree: rays along the row of boxes enter all of them, so the stack runs deep.
+    // The nearest box a ray enters, and whether it enters any before tMax, must match testing every box.
+    Random u(7);
+    for (int i = 0; i < 2000; ++i) {
+        // Odd: straight along +x inside the row (enters every box); even: backwards from far out, slightly tilted.
+        const bool along = i % 2;
+        const Vec3 origin(along ? -1.0f : u(0.0f, 2e37f), along ? u(0.05f, 0.45f) : u(-0.2f, 0.7f),
+                          along ? u(0.05f, 0.95f) : u(-0.2f, 1.2f));
+        const Ray ray{origin, along ? Vec3(1, 0, 0) : normalize(Vec3(-1.0f, u(-1e-3f, 1e-3f), u(-1e-3f, 1e-3f)))};
+        const BoxRay boxRay = makeBoxRay(ray);
+        float tBrute = INFINITY, tEntry;
+        for (const Aabb& b : bounds)
+            if (intersectBounds(boxRay, b.min, b.max, 0.0f, tBrute, tEntry)) tBrute = std::min(tBrute, std::max(tEntry, 1e-30f));
+        float tBvh = INFINITY;
+        traverseClosest(wide.data(), ray, 0.0f, tBvh, [&](uint32_t first, uint32_t count, float& tMax) {
+            bool hit = false;
+            for (uint32_t k = first; k < first + count; ++k) {
+                const Aabb& b = bounds[bvh.primitiveOrder[k]];
+                if (intersectBounds(boxRay, b.min, b.max, 0.0f, tMax, tEntry)) {
+                    tMax = std::min(tMax, std::max(tEntry, 1e-30f));
+                    hit = true;
+                }
+            }
+            return hit;
+        });
+        ASSERT_EQ(tBvh, tBrute) << "ray " << i;
+        int leaves = 0;
+        EXPECT_FALSE(traverseAny(wide.data(), ray, 0.0f, INFINITY, [&](uint32_t, uint32_t, float) { return ++leaves, false; }));
+        if (along) EXPECT_GE(leaves, 240) << "a ray along the row should enter most leaves";
+    }
 }
 
 TEST(BvhBuild, SameTreeWhateverTheThreadCount) {
@@ -337,6 +432,48 @@ TEST(BvhTraverse, AxisAlignedRaysOnSlabPlanesMatchBruteForce) {
         rays.push_back({origin, direction});
     }
     expectMatchesBruteForce(scene, rays);
+}
+
+// The host's SSE child test and the scalar one the device runs must agree bit for bit: same mask, same entry
+// distances. Boxes and rays are drawn rich in the awkward cases: flat and empty boxes, coordinates on shared
+// planes, zero direction components (infinite inverses, NaN products) and signed zeros.
+TEST(BvhTraverse, SseChildTestMatchesScalarBitForBit) {
+#if TRAZO_BVH_SSE
+    Random u(50);
+    auto coordinate = [&]() {
+        const float pick = u(0.0f, 4.0f);
+        return pick < 1.0f ? std::round(u(-3.0f, 3.0f)) : (pick < 1.2f ? -0.0f : u(-3.0f, 3.0f));
+    };
+    const float inf = INFINITY;
+    int hits = 0;
+    for (int trial = 0; trial < 200000; ++trial) {
+        WideBvhNode node{};
+        for (int lane = 0; lane < kBvhWidth; ++lane)
+            for (int axis = 0; axis < 3; ++axis) {
+                float lo = coordinate(), hi = coordinate();
+                if (lo > hi) std::swap(lo, hi);
+                if (u(0.0f, 1.0f) < 0.05f) lo = hi;                      // flat
+                if (u(0.0f, 1.0f) < 0.02f) lo = inf, hi = -inf;          // empty
+                node.bounds[axis][0][lane] = lo;
+                node.bounds[axis][1][lane] = hi;
+            }
+        Vec3 origin(coordinate(), coordinate(), coordinate()), direction = u.direction();
+        for (int axis = 0; axis < 3; ++axis)
+            if (u(0.0f, 1.0f) < 0.2f) direction[axis] = u(0.0f, 1.0f) < 0.5f ? 0.0f : -0.0f;
+        const bvh_detail::NodeRay r = bvh_detail::makeNodeRay({origin, direction});
+        const float tMin = u(0.0f, 1.0f) < 0.5f ? 0.0f : u(0.0f, 2.0f);
+        const float tMax = u(0.0f, 1.0f) < 0.5f ? inf : u(0.0f, 6.0f);
+        float sse[kBvhWidth], scalar[kBvhWidth];
+        const unsigned maskSse = bvh_detail::intersectChildrenSse(r, node, tMin, tMax, sse);
+        const unsigned maskScalar = bvh_detail::intersectChildrenScalar(r, node, tMin, tMax, scalar);
+        ASSERT_EQ(maskSse, maskScalar) << "trial " << trial;
+        ASSERT_EQ(0, std::memcmp(sse, scalar, sizeof sse)) << "trial " << trial;
+        hits += maskScalar != 0;
+    }
+    EXPECT_GT(hits, 20000) << "too few boxes entered to test anything";
+#else
+    GTEST_SKIP() << "this build has no SSE child test (not x86-64, or a device compile)";
+#endif
 }
 
 // 1,000,000 rays from outside a closed tessellated sphere towards points inside it: each must hit, and be

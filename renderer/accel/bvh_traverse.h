@@ -1,26 +1,28 @@
-// BVH traversal (host and device): closest hit and any hit over a BvhNode array, the primitives tested by
-// a caller-supplied leaf function. Iterative with a fixed stack; children are visited nearest first.
+// BVH traversal (host and device): closest hit and any hit over a WideBvhNode array, the primitives tested
+// by a caller-supplied leaf function. Iterative with a fixed stack; the children a ray enters are visited
+// nearest first.
 #pragma once
 
-#include <cstddef>
-
-#include "accel/bvh_node.h"
 #include "accel/ray_box.h"
+#include "accel/wide_bvh_node.h"
+
+#if !defined(__CUDA_ARCH__) && defined(__SSE2__)
+#include <emmintrin.h>
+#define TRAZO_BVH_SSE 1
+#else
+#define TRAZO_BVH_SSE 0
+#endif
 
 namespace trazo {
 
 namespace bvh_detail {
 
-// The slab test of ray_box.h specialised for BvhNode: the node is read as 8 floats (boundsMin at 0–2,
-// boundsMax at 4–6), and which of a slab's two planes the ray crosses first is settled once per ray as a
-// float index, so a box test is plain loads and arithmetic (no per-axis sign selection, no branches).
-static_assert(offsetof(BvhNode, boundsMin) == 0 && offsetof(BvhNode, boundsMax) == 4 * sizeof(float),
-              "intersectNode reads a BvhNode as floats: bounds at 0..2 and 4..6");
-
+// The slab test of ray_box.h for a node's four children at once. Which of a slab's two planes the ray
+// crosses first is settled once per ray, so a box test is plain loads and arithmetic, without branches.
 struct NodeRay {
     Vec3 origin;
     Vec3 invDirection;
-    int nearX, nearY, nearZ;  // float index of the slab plane entered first; the exit plane is nearX ^ 4
+    int nearSide[3];  // per axis: 0 = the min plane is entered first, 1 = the max plane; the exit is 1 − it
 };
 
 TRAZO_HD NodeRay makeNodeRay(const Ray& ray) {
@@ -29,77 +31,124 @@ TRAZO_HD NodeRay makeNodeRay(const Ray& ray) {
     r.origin = b.origin;
     r.invDirection = b.invDirection;
     // The same choice as narrowSlab: the max plane first exactly when invDirection < 0 (so −0 → −inf picks it).
-    r.nearX = b.invDirection.x < 0.0f ? 4 : 0;
-    r.nearY = b.invDirection.y < 0.0f ? 5 : 1;
-    r.nearZ = b.invDirection.z < 0.0f ? 6 : 2;
+    for (int axis = 0; axis < 3; ++axis) r.nearSide[axis] = b.invDirection[axis] < 0.0f ? 1 : 0;
     return r;
 }
 
-// Bit for bit intersectBounds(makeBoxRay(ray), node.boundsMin, node.boundsMax, tMin, tMax, tEntry).
-TRAZO_HD bool intersectNode(const NodeRay& r, const BvhNode* node, float tMin, float tMax, float& tEntry) {
-    const float* b = reinterpret_cast<const float*>(node);
-    const float nearX = (b[r.nearX] - r.origin.x) * r.invDirection.x;
-    const float farX = (b[r.nearX ^ 4] - r.origin.x) * r.invDirection.x;
-    const float nearY = (b[r.nearY] - r.origin.y) * r.invDirection.y;
-    const float farY = (b[r.nearY ^ 4] - r.origin.y) * r.invDirection.y;
-    const float nearZ = (b[r.nearZ] - r.origin.z) * r.invDirection.z;
-    const float farZ = (b[r.nearZ ^ 4] - r.origin.z) * r.invDirection.z;
-    // The comparison order of intersectBounds: a NaN (ray on a plane it runs along) keeps the running bound.
-    float t0 = nearX > tMin ? nearX : tMin;
-    t0 = nearY > t0 ? nearY : t0;
-    t0 = nearZ > t0 ? nearZ : t0;
-    float t1 = farX < tMax ? farX : tMax;
-    t1 = farY < t1 ? farY : t1;
-    t1 = farZ < t1 ? farZ : t1;
-    tEntry = t0;
-    return t0 <= t1 * kBoxExitScale;
+// Lane by lane, bit for bit intersectBounds(makeBoxRay(ray), child box, tMin, tMax, tEntry[lane]); bit
+// `lane` of the result is set when the ray meets that box. The host's SSE version below computes the same
+// IEEE operations in the same order, so both backends visit the same nodes.
+TRAZO_HD unsigned intersectChildrenScalar(const NodeRay& r, const WideBvhNode& node, float tMin, float tMax,
+                                          float tEntry[kBvhWidth]) {
+    unsigned mask = 0;
+    for (int lane = 0; lane < kBvhWidth; ++lane) {
+        float t0 = tMin, t1 = tMax;
+        for (int axis = 0; axis < 3; ++axis) {
+            const float tNear = (node.bounds[axis][r.nearSide[axis]][lane] - r.origin[axis]) * r.invDirection[axis];
+            const float tFar = (node.bounds[axis][1 - r.nearSide[axis]][lane] - r.origin[axis]) * r.invDirection[axis];
+            // The comparison order of narrowSlab: a NaN (ray on a plane it runs along) keeps the running bound.
+            t0 = tNear > t0 ? tNear : t0;
+            t1 = tFar < t1 ? tFar : t1;
+        }
+        tEntry[lane] = t0;
+        if (t0 <= t1 * kBoxExitScale) mask |= 1u << lane;
+    }
+    return mask;
+}
+
+#if TRAZO_BVH_SSE
+// _mm_max_ps(a, b) is a > b ? a : b and _mm_min_ps(a, b) is a < b ? a : b, NaN handling included: exactly
+// the scalar selects above.
+inline unsigned intersectChildrenSse(const NodeRay& r, const WideBvhNode& node, float tMin, float tMax,
+                                     float tEntry[kBvhWidth]) {
+    __m128 t0 = _mm_set1_ps(tMin), t1 = _mm_set1_ps(tMax);
+    for (int axis = 0; axis < 3; ++axis) {
+        const __m128 origin = _mm_set1_ps(r.origin[axis]), inv = _mm_set1_ps(r.invDirection[axis]);
+        const __m128 tNear = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[axis][r.nearSide[axis]]), origin), inv);
+        const __m128 tFar = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[axis][1 - r.nearSide[axis]]), origin), inv);
+        t0 = _mm_max_ps(tNear, t0);
+        t1 = _mm_min_ps(tFar, t1);
+    }
+    _mm_storeu_ps(tEntry, t0);
+    return (unsigned)_mm_movemask_ps(_mm_cmple_ps(t0, _mm_mul_ps(t1, _mm_set1_ps(kBoxExitScale))));
+}
+#endif
+
+TRAZO_HD unsigned intersectChildren(const NodeRay& r, const WideBvhNode& node, float tMin, float tMax,
+                                    float tEntry[kBvhWidth]) {
+#if TRAZO_BVH_SSE
+    return intersectChildrenSse(r, node, tMin, tMax, tEntry);
+#else
+    return intersectChildrenScalar(r, node, tMin, tMax, tEntry);
+#endif
+}
+
+struct StackEntry {
+    uint32_t ref;
+    float tEntry;  // lets a popped node be skipped once a closer hit is known
+};
+
+// For closest-hit queries: orders the children in `mask` by entry distance: pushes all but the nearest (farthest deepest) and
+// returns the nearest. `mask` must not be 0.
+TRAZO_HD uint32_t pushFartherChildren(const WideBvhNode& node, unsigned mask, const float tEntry[kBvhWidth],
+                                      StackEntry* stack, int& size) {
+    StackEntry hits[kBvhWidth];
+    int count = 0;
+    for (int lane = 0; lane < kBvhWidth; ++lane) {
+        if (!(mask & (1u << lane)) || node.child[lane] == kBvhEmptyLane) continue;
+        // Insertion into descending order of tEntry: the nearest ends up last.
+        int i = count++;
+        for (; i > 0 && hits[i - 1].tEntry < tEntry[lane]; --i) hits[i] = hits[i - 1];
+        hits[i] = {node.child[lane], tEntry[lane]};
+    }
+    if (count == 0) return kBvhEmptyLane;
+    for (int i = 0; i < count - 1; ++i) stack[size++] = hits[i];
+    return hits[count - 1].ref;
+}
+
+// For any-hit queries: pushes the children in `mask` but the first in lane order, returns the first. Sorting
+// by distance, as closest-hit does, made shadow rays slower (bvh_bench: 1M-triangle sphere, 0.49x → 0.65x
+// of Embree), since any occluder will do.
+TRAZO_HD uint32_t pushLaterChildren(const WideBvhNode& node, unsigned mask, StackEntry* stack, int& size) {
+    uint32_t first = kBvhEmptyLane;
+    for (int lane = kBvhWidth - 1; lane >= 0; --lane) {
+        if (!(mask & (1u << lane)) || node.child[lane] == kBvhEmptyLane) continue;
+        if (first != kBvhEmptyLane) stack[size++] = {first, 0.0f};
+        first = node.child[lane];
+    }
+    return first;
 }
 
 }  // namespace bvh_detail
-
-struct BvhStackEntry {
-    uint32_t node;
-    float tEntry;  // lets a popped node be skipped once a closer hit is known
-};
 
 // Closest hit within (tMin, tMax). leaf(first, count, tMax) tests primitives [first, first + count), shrinks
 // tMax on a closer hit and returns whether it hit. Returns whether any leaf hit; tMax is then the nearest t.
 // `nodes` must hold a non-empty BVH (a BVH over zero primitives has no root: skip it).
 template <class LeafFn>
-TRAZO_HD bool traverseClosest(const BvhNode* nodes, const Ray& ray, float tMin, float& tMax, LeafFn&& leaf) {
+TRAZO_HD bool traverseClosest(const WideBvhNode* nodes, const Ray& ray, float tMin, float& tMax, LeafFn&& leaf) {
     const bvh_detail::NodeRay nodeRay = bvh_detail::makeNodeRay(ray);
-    float tRoot;
-    if (!bvh_detail::intersectNode(nodeRay, nodes, tMin, tMax, tRoot)) return false;
-    BvhStackEntry stack[kBvhStackSize];
+    bvh_detail::StackEntry stack[kBvhStackSize];
     int size = 0;
-    uint32_t index = 0;
+    uint32_t ref = 0;
     bool hit = false;
     for (;;) {
-        const BvhNode& node = nodes[index];
-        if (node.primCount == 0) {
-            const uint32_t left = node.firstOrChild;
-            float tLeft, tRight;
-            const bool hitLeft = bvh_detail::intersectNode(nodeRay, nodes + left, tMin, tMax, tLeft);
-            const bool hitRight = bvh_detail::intersectNode(nodeRay, nodes + left + 1, tMin, tMax, tRight);
-            if (hitLeft && hitRight) {
-                const bool rightFirst = tRight < tLeft;
-                stack[size++] = {rightFirst ? left : left + 1, rightFirst ? tLeft : tRight};
-                index = rightFirst ? left + 1 : left;
-                continue;
+        if (!bvhIsLeaf(ref)) {
+            const WideBvhNode& node = nodes[ref];
+            float tEntry[kBvhWidth];
+            const unsigned mask = bvh_detail::intersectChildren(nodeRay, node, tMin, tMax, tEntry);
+            if (mask) {
+                ref = bvh_detail::pushFartherChildren(node, mask, tEntry, stack, size);
+                if (ref != kBvhEmptyLane) continue;
             }
-            if (hitLeft || hitRight) {
-                index = hitLeft ? left : left + 1;
-                continue;
-            }
-        } else if (leaf(node.firstOrChild, node.primCount, tMax)) {
+        } else if (leaf(bvhLeafFirst(ref), bvhLeafCount(ref), tMax)) {
             hit = true;
         }
-        // Pop the nearest pending node that may still hold something closer than tMax.
+        // Pop the nearest pending child that may still hold something closer than tMax.
         for (;;) {
             if (size == 0) return hit;
-            const BvhStackEntry e = stack[--size];
+            const bvh_detail::StackEntry e = stack[--size];
             if (e.tEntry <= tMax * kBoxExitScale) {
-                index = e.node;
+                ref = e.ref;
                 break;
             }
         }
@@ -109,36 +158,25 @@ TRAZO_HD bool traverseClosest(const BvhNode* nodes, const Ray& ray, float tMin, 
 // Whether anything blocks the ray within (tMin, tMax). leaf(first, count, tMax) returns true as soon as one of
 // its primitives does; traversal stops there.
 template <class LeafFn>
-TRAZO_HD bool traverseAny(const BvhNode* nodes, const Ray& ray, float tMin, float tMax, LeafFn&& leaf) {
+TRAZO_HD bool traverseAny(const WideBvhNode* nodes, const Ray& ray, float tMin, float tMax, LeafFn&& leaf) {
     const bvh_detail::NodeRay nodeRay = bvh_detail::makeNodeRay(ray);
-    float tRoot;
-    if (!bvh_detail::intersectNode(nodeRay, nodes, tMin, tMax, tRoot)) return false;
-    uint32_t stack[kBvhStackSize];
+    bvh_detail::StackEntry stack[kBvhStackSize];
     int size = 0;
-    uint32_t index = 0;
+    uint32_t ref = 0;
     for (;;) {
-        const BvhNode& node = nodes[index];
-        if (node.primCount == 0) {
-            const uint32_t left = node.firstOrChild;
-            float tLeft, tRight;
-            const bool hitLeft = bvh_detail::intersectNode(nodeRay, nodes + left, tMin, tMax, tLeft);
-            const bool hitRight = bvh_detail::intersectNode(nodeRay, nodes + left + 1, tMin, tMax, tRight);
-            if (hitLeft && hitRight) {
-                // Nearest first still pays for shadow rays: occluders near the origin are found sooner.
-                const bool rightFirst = tRight < tLeft;
-                stack[size++] = rightFirst ? left : left + 1;
-                index = rightFirst ? left + 1 : left;
-                continue;
+        if (!bvhIsLeaf(ref)) {
+            const WideBvhNode& node = nodes[ref];
+            float tEntry[kBvhWidth];
+            const unsigned mask = bvh_detail::intersectChildren(nodeRay, node, tMin, tMax, tEntry);
+            if (mask) {
+                ref = bvh_detail::pushLaterChildren(node, mask, stack, size);
+                if (ref != kBvhEmptyLane) continue;
             }
-            if (hitLeft || hitRight) {
-                index = hitLeft ? left : left + 1;
-                continue;
-            }
-        } else if (leaf(node.firstOrChild, node.primCount, tMax)) {
+        } else if (leaf(bvhLeafFirst(ref), bvhLeafCount(ref), tMax)) {
             return true;
         }
         if (size == 0) return false;
-        index = stack[--size];
+        ref = stack[--size].ref;
     }
 }
 

@@ -5,6 +5,7 @@
 #include "device/flatten_mesh.h"
 
 #include "accel/bvh_build.h"
+#include "accel/collapse_bvh.h"
 
 #include <cmath>
 #include <numeric>
@@ -124,8 +125,7 @@ Aabb objectBounds(const SceneArrays& a, const ObjectRef& o) {
             break;
         }
         case ObjectKind::Mesh:
-            b.grow(a.meshNodes[a.meshes[o.index].nodeOffset].boundsMin);
-            b.grow(a.meshNodes[a.meshes[o.index].nodeOffset].boundsMax);
+            b.grow(wideNodeBounds(a.meshNodes[a.meshes[o.index].nodeOffset]));
             break;
     }
     if (b.empty()) return Aabb{Vec3(0.0f), Vec3(0.0f)};  // an empty CSG solid: never hit anyway
@@ -144,7 +144,7 @@ void buildTopLevel(SceneArrays& out) {
     std::vector<ObjectRef> ordered;
     for (uint32_t old : bvh.primitiveOrder) ordered.push_back(out.objects[old]);
     out.objects = std::move(ordered);
-    out.topNodes = std::move(bvh.nodes);
+    out.topNodes = collapseBvh(bvh);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "accel/bvh_build.h"
+#include "accel/collapse_bvh.h"
 
 namespace trazo {
 
@@ -128,9 +129,10 @@ uint32_t appendMesh(const PreparedMesh& mesh, SceneArrays& out) {
         bounds[i] = Aabb{min(t.p0, min(t.p1, t.p2)), max(t.p0, max(t.p1, t.p2))};
     }
     const Bvh bvh = buildBvh(bounds);
+    const std::vector<WideBvhNode> nodes = collapseBvh(bvh);
     const MeshShape shape{(uint32_t)out.meshNodes.size(), (uint32_t)out.triangles.size(),
                           (uint32_t)mesh.triangles.size(), mesh.hasUvs ? 1u : 0u};
-    out.meshNodes.insert(out.meshNodes.end(), bvh.nodes.begin(), bvh.nodes.end());
+    out.meshNodes.insert(out.meshNodes.end(), nodes.begin(), nodes.end());
     for (uint32_t old : bvh.primitiveOrder) {
         out.triangles.push_back(mesh.triangles[old]);
         out.triangleCorners.push_back(mesh.corners[old]);

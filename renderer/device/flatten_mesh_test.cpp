@@ -101,22 +101,24 @@ TEST(AppendMesh, TrianglesGoInBvhLeafOrderAndEachLeafBoundsItsTriangles) {
     for (uint32_t meshIndex : {first, second}) {
         const MeshShape& shape = arrays.meshes[meshIndex];
         EXPECT_EQ(shape.triangleCount, 300u);
-        const BvhNode* nodes = arrays.meshNodes.data() + shape.nodeOffset;
+        const WideBvhNode* nodes = arrays.meshNodes.data() + shape.nodeOffset;
         const size_t nodeCount = (meshIndex == first ? arrays.meshes[second].nodeOffset : arrays.meshNodes.size()) -
                                  shape.nodeOffset;
         uint32_t covered = 0;
-        for (uint32_t n = 0; n < nodeCount; ++n) {
-            if (nodes[n].primCount == 0) continue;
-            for (uint32_t i = nodes[n].firstOrChild; i < nodes[n].firstOrChild + nodes[n].primCount; ++i) {
-                const MeshTriangle& t = arrays.triangles[shape.triangleOffset + i];
-                for (const Vec3 p : {t.p0, t.p1, t.p2})
-                    for (int a = 0; a < 3; ++a) {
-                        EXPECT_GE(p[a], nodes[n].boundsMin[a]);
-                        EXPECT_LE(p[a], nodes[n].boundsMax[a]);
-                    }
-                ++covered;
+        for (uint32_t n = 0; n < nodeCount; ++n)
+            for (int lane = 0; lane < kBvhWidth; ++lane) {
+                const uint32_t ref = nodes[n].child[lane];
+                if (ref == kBvhEmptyLane || !bvhIsLeaf(ref)) continue;
+                for (uint32_t i = bvhLeafFirst(ref); i < bvhLeafFirst(ref) + bvhLeafCount(ref); ++i) {
+                    const MeshTriangle& t = arrays.triangles[shape.triangleOffset + i];
+                    for (const Vec3 p : {t.p0, t.p1, t.p2})
+                        for (int a = 0; a < 3; ++a) {
+                            EXPECT_GE(p[a], nodes[n].bounds[a][0][lane]);
+                            EXPECT_LE(p[a], nodes[n].bounds[a][1][lane]);
+                        }
+                    ++covered;
+                }
             }
-        }
         EXPECT_EQ(covered, 300u);
     }
 }

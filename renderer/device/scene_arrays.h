@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "accel/bvh_node.h"
+#include "accel/wide_bvh_node.h"
 #include "core/vec3.h"
 #include "device/feature_mask.h"
 #include "geometry/csg.h"
@@ -73,10 +73,10 @@ struct RenderSettings {
     X(TextureData, textures)           \
     X(Vec3, texels)                    \
     X(MeshShape, meshes)               \
-    X(BvhNode, meshNodes)              \
+    X(WideBvhNode, meshNodes)          \
     X(MeshTriangle, triangles)         \
     X(TriangleCorners, triangleCorners) \
-    X(BvhNode, topNodes)
+    X(WideBvhNode, topNodes)
 
 // Owning host copy of the flattened scene; what Backend::upload takes.
 struct SceneArrays {

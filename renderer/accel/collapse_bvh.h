@@ -1,0 +1,24 @@
+// Collapsing a binary BVH into the four-wide nodes the kernels traverse (host).
+#pragma once
+
+#include <vector>
+
+#include "accel/aabb.h"
+#include "accel/bvh_build.h"
+#include "accel/wide_bvh_node.h"
+
+namespace trazo {
+
+// Each wide node takes the children of a binary node and, while it has fewer than four, opens its interior
+// child of largest surface area (the one a ray is most likely to enter). Leaves and the primitive order stay
+// as they are. Nodes are laid out depth first, the root at 0. A binary BVH that is a single leaf becomes a
+// root with one leaf child; an empty one stays empty. Needs leaves of ≤ kBvhMaxLeafSize primitives.
+std::vector<WideBvhNode> collapseBvh(const Bvh& bvh);
+
+// The union of a wide node's child boxes (for the root: the whole BVH's bounds).
+Aabb wideNodeBounds(const WideBvhNode& node);
+
+// Depth of the deepest leaf below the root (a root with only leaf children: 1); 0 for an empty BVH.
+uint32_t wideBvhDepth(const std::vector<WideBvhNode>& nodes);
+
+}  // namespace trazo
