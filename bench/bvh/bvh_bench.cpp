@@ -13,7 +13,7 @@
 #include "accel/bvh_traverse.h"
 #include "accel/collapse_bvh.h"
 #include "core/rng.h"
-#include "geometry/intersect_triangle.h"
+#include "geometry/intersect_triangle_leaf.h"
 #include "geometry/tessellate.h"
 #include "scene/obj_reader.h"
 #if TRAZO_HAVE_EMBREE
@@ -35,36 +35,26 @@ struct Query {
 
 struct TriangleScene {
     std::vector<Vec3> triangles;  // original order
-    std::vector<Vec3> ordered;    // BVH order
+    std::vector<MeshTriangle> ordered;  // BVH order
     Bvh bvh;
     std::vector<WideBvhNode> nodes;  // collapseBvh(bvh): what is traversed
     Aabb bounds;
 
     float intersect(const Ray& ray, float tMin, float tMax) const {
         const TriangleRay tr = makeTriangleRay(ray);
-        const Vec3* p = ordered.data();
         traverseClosest(nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float& t) {
-            bool hit = false;
-            for (uint32_t i = first; i < first + count; ++i) {
-                TriangleHit h;
-                if (intersectTriangle(tr, p[3 * i], p[3 * i + 1], p[3 * i + 2], tMin, t, h)) {
-                    t = h.t;
-                    hit = true;
-                }
-            }
-            return hit;
+            TriangleHit h;
+            uint32_t which;
+            if (!intersectTriangleLeaf(tr, ordered.data() + first, count, tMin, t, h, which)) return false;
+            t = h.t;
+            return true;
         });
         return tMax;
     }
     bool occluded(const Ray& ray, float tMin, float tMax) const {
         const TriangleRay tr = makeTriangleRay(ray);
-        const Vec3* p = ordered.data();
         return traverseAny(nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float t) {
-            for (uint32_t i = first; i < first + count; ++i) {
-                TriangleHit h;
-                if (intersectTriangle(tr, p[3 * i], p[3 * i + 1], p[3 * i + 2], tMin, t, h)) return true;
-            }
-            return false;
+            return triangleLeafBlocks(tr, ordered.data() + first, count, tMin, t);
         });
     }
 };
@@ -79,7 +69,7 @@ std::vector<Aabb> boundsOf(const std::vector<Vec3>& tris) {
 double timeBuild(const std::vector<Aabb>& bounds, unsigned threads, int runs) {
     double best = 1e30;
     for (int r = 0; r < runs; ++r) {
-        BvhBuildOptions options;
+        BvhBuildOptions options = triangleBvhOptions();
         options.threads = threads;
         const auto start = Clock::now();
         const Bvh bvh = buildBvh(bounds, options);
@@ -173,13 +163,13 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
     const int runs = count > 200000 ? 2 : 5;
     const double build1 = opt.build ? timeBuild(bounds, 1, runs) : 0.0,
                  buildN = opt.build ? timeBuild(bounds, threads, runs) : 0.0;
-    BvhBuildOptions options;
+    BvhBuildOptions options = triangleBvhOptions();
     options.threads = threads;
     scene.bvh = buildBvh(bounds, options);
     scene.nodes = collapseBvh(scene.bvh);
     for (const Aabb& b : bounds) scene.bounds.grow(b);
     for (uint32_t id : scene.bvh.primitiveOrder)
-        scene.ordered.insert(scene.ordered.end(), {scene.triangles[3 * id], scene.triangles[3 * id + 1], scene.triangles[3 * id + 2]});
+        scene.ordered.push_back({scene.triangles[3 * id], scene.triangles[3 * id + 1], scene.triangles[3 * id + 2]});
 
     std::printf("\n== %s: %u triangles ==\n", name, count);
     std::printf("Trazo build: %.1f ms (1 thread), %.1f ms (%u threads); %zu binary nodes (SAH cost %.2f, depth %u) "

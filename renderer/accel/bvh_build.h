@@ -20,6 +20,16 @@ struct BvhBuildOptions {
 
 constexpr uint32_t kMaxBvhBins = 64;
 
+// For triangles, which intersectTriangleLeaf tests a whole leaf (≤ 4) at a time for about the cost of one:
+// a triangle is priced at 0.3 node visits, so the SAH fills leaves. On the 1M-triangle sphere of bvh_bench
+// this halved the nodes (34 → 19 MB) and raised random rays from 0.60x to 0.65x of Embree (0.15 gives the
+// same tree).
+inline BvhBuildOptions triangleBvhOptions() {
+    BvhBuildOptions options;
+    options.intersectionCost = 0.3f;
+    return options;
+}
+
 struct Bvh {
     std::vector<BvhNode> nodes;               // nodes[0] is the root; empty for zero primitives
     std::vector<uint32_t> primitiveOrder;     // reordered position i holds original primitive primitiveOrder[i]

@@ -13,7 +13,7 @@
 #include "accel/bvh_traverse.h"
 #include "accel/collapse_bvh.h"
 #include "core/rng.h"
-#include "geometry/intersect_triangle.h"
+#include "geometry/intersect_triangle_leaf.h"
 #include "geometry/tessellate.h"
 
 namespace trazo {
@@ -38,37 +38,30 @@ std::vector<Aabb> boundsOf(const std::vector<Vec3>& tris) {
     return bounds;
 }
 
-// A triangle list with its BVH and the triangles in BVH order, as the renderer will hold them.
+// A triangle list with its BVH and the triangles in BVH order, as the renderer holds them and tests them
+// (a leaf at a time).
 struct TriangleBvh {
     std::vector<Vec3> tris;
     Bvh bvh;
     std::vector<WideBvhNode> nodes;  // what is traversed
-    std::vector<Vec3> ordered;
+    std::vector<MeshTriangle> ordered;
 
-    explicit TriangleBvh(std::vector<Vec3> t, BvhBuildOptions options = {}) : tris(std::move(t)) {
+    explicit TriangleBvh(std::vector<Vec3> t, BvhBuildOptions options = triangleBvhOptions()) : tris(std::move(t)) {
         bvh = buildBvh(boundsOf(tris), options);
         nodes = collapseBvh(bvh);
-        for (uint32_t id : bvh.primitiveOrder)
-            ordered.insert(ordered.end(), {tris[3 * id], tris[3 * id + 1], tris[3 * id + 2]});
+        for (uint32_t id : bvh.primitiveOrder) ordered.push_back({tris[3 * id], tris[3 * id + 1], tris[3 * id + 2]});
     }
 
     // Closest hit; `index` is the original triangle index.
     bool closest(const Ray& ray, float tMin, float& tMax, uint32_t& index, TriangleHit& hit) const {
         const TriangleRay tr = makeTriangleRay(ray);
-        const Vec3* p = ordered.data();
         uint32_t found = 0;
         const bool any = traverseClosest(nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float& t) {
-            bool h = false;
-            for (uint32_t i = first; i < first + count; ++i) {
-                TriangleHit th;
-                if (intersectTriangle(tr, p[3 * i], p[3 * i + 1], p[3 * i + 2], tMin, t, th)) {
-                    t = th.t;
-                    hit = th;
-                    found = i;
-                    h = true;
-                }
-            }
-            return h;
+            uint32_t which;
+            if (!intersectTriangleLeaf(tr, ordered.data() + first, count, tMin, t, hit, which)) return false;
+            t = hit.t;
+            found = first + which;
+            return true;
         });
         if (any) index = bvh.primitiveOrder[found];
         return any;
@@ -76,13 +69,8 @@ struct TriangleBvh {
 
     bool occluded(const Ray& ray, float tMin, float tMax) const {
         const TriangleRay tr = makeTriangleRay(ray);
-        const Vec3* p = ordered.data();
         return traverseAny(nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float t) {
-            for (uint32_t i = first; i < first + count; ++i) {
-                TriangleHit th;
-                if (intersectTriangle(tr, p[3 * i], p[3 * i + 1], p[3 * i + 2], tMin, t, th)) return true;
-            }
-            return false;
+            return triangleLeafBlocks(tr, ordered.data() + first, count, tMin, t);
         });
     }
 };

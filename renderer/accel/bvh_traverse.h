@@ -83,6 +83,19 @@ TRAZO_HD unsigned intersectChildren(const NodeRay& r, const WideBvhNode& node, f
 #endif
 }
 
+// Host: starts loading the interior children the ray entered while the nearest is being chosen; random rays
+// wait on memory for most of their time (bvh_bench, 1M-triangle sphere: random rays 0.51x → 0.59x of Embree).
+TRAZO_HD void prefetchChildren(const WideBvhNode* nodes, const WideBvhNode& node, unsigned mask) {
+#if !defined(__CUDA_ARCH__)
+    for (int lane = 0; lane < kBvhWidth; ++lane)
+        if ((mask & (1u << lane)) && !bvhIsLeaf(node.child[lane])) {
+            const char* child = reinterpret_cast<const char*>(nodes + node.child[lane]);
+            __builtin_prefetch(child);
+            __builtin_prefetch(child + 64);
+        }
+#endif
+}
+
 struct StackEntry {
     uint32_t ref;
     float tEntry;  // lets a popped node be skipped once a closer hit is known
@@ -137,6 +150,7 @@ TRAZO_HD bool traverseClosest(const WideBvhNode* nodes, const Ray& ray, float tM
             float tEntry[kBvhWidth];
             const unsigned mask = bvh_detail::intersectChildren(nodeRay, node, tMin, tMax, tEntry);
             if (mask) {
+                bvh_detail::prefetchChildren(nodes, node, mask);
                 ref = bvh_detail::pushFartherChildren(node, mask, tEntry, stack, size);
                 if (ref != kBvhEmptyLane) continue;
             }

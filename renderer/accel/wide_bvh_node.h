@@ -31,7 +31,7 @@ TRAZO_HD constexpr uint32_t bvhLeafCount(uint32_t ref) { return ((ref >> 29) & 3
 // each interior node on the way down pushes at most kBvhWidth − 1 siblings.
 constexpr int kBvhStackSize = (kBvhWidth - 1) * (int)kMaxBvhDepth;
 
-struct alignas(64) WideBvhNode {
+struct alignas(128) WideBvhNode {
     float bounds[3][2][kBvhWidth];  // [axis][0 = min, 1 = max][child]
     uint32_t child[kBvhWidth];      // child references (see above)
     uint32_t padding[kBvhWidth];    // to 128 bytes: a node is two whole cache lines

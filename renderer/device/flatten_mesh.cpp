@@ -128,7 +128,7 @@ uint32_t appendMesh(const PreparedMesh& mesh, SceneArrays& out) {
         const MeshTriangle& t = mesh.triangles[i];
         bounds[i] = Aabb{min(t.p0, min(t.p1, t.p2)), max(t.p0, max(t.p1, t.p2))};
     }
-    const Bvh bvh = buildBvh(bounds);
+    const Bvh bvh = buildBvh(bounds, triangleBvhOptions());
     const std::vector<WideBvhNode> nodes = collapseBvh(bvh);
     const MeshShape shape{(uint32_t)out.meshNodes.size(), (uint32_t)out.triangles.size(),
                           (uint32_t)mesh.triangles.size(), mesh.hasUvs ? 1u : 0u};

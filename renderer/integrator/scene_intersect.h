@@ -10,11 +10,12 @@
 #include "geometry/intersect_cylinder.h"
 #include "geometry/intersect_rectangle.h"
 #include "geometry/intersect_sphere.h"
-#include "geometry/intersect_triangle.h"
+#include "geometry/intersect_triangle_leaf.h"
 
 namespace trazo {
 
 constexpr uint32_t kNoObject = 0xffffffffu;
+static_assert(kBvhMaxLeafSize <= kMaxLeafTriangles, "a mesh leaf must fit intersectTriangleLeaf");
 
 struct SurfaceHit {
     float t;
@@ -33,17 +34,11 @@ TRAZO_HD bool intersectMesh(const SceneView& scene, const MeshShape& mesh, const
     uint32_t best = 0;
     TriangleHit bestHit{};
     auto leaf = [&](uint32_t first, uint32_t count, float& tNearest) {
-        bool any = false;
-        for (uint32_t i = first; i < first + count; ++i) {
-            TriangleHit h;
-            if (intersectTriangle(tr, triangles[i].p0, triangles[i].p1, triangles[i].p2, tMin, tNearest, h)) {
-                tNearest = h.t;
-                bestHit = h;
-                best = i;
-                any = true;
-            }
-        }
-        return any;
+        uint32_t which;
+        if (!intersectTriangleLeaf(tr, triangles + first, count, tMin, tNearest, bestHit, which)) return false;
+        tNearest = bestHit.t;
+        best = first + which;
+        return true;
     };
     if (!traverseClosest(scene.meshNodes.data + mesh.nodeOffset, ray, tMin, tMax, leaf)) return false;
     const MeshTriangle& t = triangles[best];
@@ -59,10 +54,7 @@ TRAZO_HD bool meshBlocks(const SceneView& scene, const MeshShape& mesh, const Ra
     const TriangleRay tr = makeTriangleRay(ray);
     const MeshTriangle* triangles = scene.triangles.data + mesh.triangleOffset;
     auto leaf = [&](uint32_t first, uint32_t count, float tLimit) {
-        TriangleHit h;
-        for (uint32_t i = first; i < first + count; ++i)
-            if (intersectTriangle(tr, triangles[i].p0, triangles[i].p1, triangles[i].p2, 0.0f, tLimit, h)) return true;
-        return false;
+        return triangleLeafBlocks(tr, triangles + first, count, 0.0f, tLimit);
     };
     return traverseAny(scene.meshNodes.data + mesh.nodeOffset, ray, 0.0f, tMax, leaf);
 }

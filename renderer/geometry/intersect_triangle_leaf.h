@@ -1,0 +1,149 @@
+// A BVH leaf's triangles (at most four) against one ray (host and device): the nearest hit, and whether any
+// hits. The device loops over intersectTriangle; the host tests the four at once with SSE, the same IEEE
+// operations in the same order lane by lane, so both backends find the same triangle at the same t.
+#pragma once
+
+#include <cstdint>
+
+#include "geometry/intersect_triangle.h"
+#include "geometry/mesh_shape.h"
+
+#if !defined(__CUDA_ARCH__) && defined(__SSE2__)
+#include <emmintrin.h>
+#define TRAZO_TRIANGLE_SSE 1
+#else
+#define TRAZO_TRIANGLE_SSE 0
+#endif
+
+namespace trazo {
+
+constexpr uint32_t kMaxLeafTriangles = 4;
+
+// Nearest hit among triangles[0, count) within (tMin, tMax): what a loop over intersectTriangle that
+// narrows tMax keeps, i.e. the smallest t, and of equal ones the first. `which` is its index.
+TRAZO_HD bool intersectTrianglesLoop(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin,
+                                     float tMax, TriangleHit& hit, uint32_t& which) {
+    bool any = false;
+    for (uint32_t i = 0; i < count; ++i) {
+        if (intersectTriangle(r, triangles[i].p0, triangles[i].p1, triangles[i].p2, tMin, tMax, hit)) {
+            tMax = hit.t;
+            which = i;
+            any = true;
+        }
+    }
+    return any;
+}
+
+#if TRAZO_TRIANGLE_SSE
+namespace triangle_detail {
+
+// Four triangles' vertices as structure of arrays: v[k][axis] holds vertex k's coordinate on that axis.
+struct Triangles4 {
+    __m128 v[3][3];
+};
+
+// Transposes up to four 36-byte triangles (lanes past `count` repeat triangle 0; the caller ignores them).
+inline Triangles4 loadTriangles4(const MeshTriangle* triangles, uint32_t count) {
+    static_assert(sizeof(MeshTriangle) == 9 * sizeof(float), "MeshTriangle is read as nine packed floats");
+    const float* t[4];
+    for (uint32_t k = 0; k < 4; ++k) t[k] = reinterpret_cast<const float*>(triangles + (k < count ? k : 0));
+    // Rows: floats 0–3 (p0.xyz, p1.x) and 4–7 (p1.yz, p2.xy) of each triangle; float 8 (p2.z) on its own.
+    __m128 a0 = _mm_loadu_ps(t[0]), a1 = _mm_loadu_ps(t[1]), a2 = _mm_loadu_ps(t[2]), a3 = _mm_loadu_ps(t[3]);
+    __m128 b0 = _mm_loadu_ps(t[0] + 4), b1 = _mm_loadu_ps(t[1] + 4), b2 = _mm_loadu_ps(t[2] + 4),
+           b3 = _mm_loadu_ps(t[3] + 4);
+    _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
+    _MM_TRANSPOSE4_PS(b0, b1, b2, b3);
+    Triangles4 out;
+    out.v[0][0] = a0, out.v[0][1] = a1, out.v[0][2] = a2;
+    out.v[1][0] = a3, out.v[1][1] = b0, out.v[1][2] = b1;
+    out.v[2][0] = b2, out.v[2][1] = b3, out.v[2][2] = _mm_setr_ps(t[0][8], t[1][8], t[2][8], t[3][8]);
+    return out;
+}
+
+// intersectSheared for four triangles. Returns the mask of lanes hit within (tMin, tMax), with t and the
+// reciprocal determinant per lane, or −1 when a lane has an edge function of exactly zero: the caller then
+// falls back to the scalar test, which re-evaluates it in double.
+template <int KZ>
+inline int intersect4Along(const TriangleRay& r, const Triangles4& tri, float tMin, float tMax, __m128& t,
+                           __m128& invDet, __m128& v, __m128& w) {
+    constexpr int KX = KZ == 2 ? 0 : KZ + 1, KY = KX == 2 ? 0 : KX + 1;
+    const __m128 ox = _mm_set1_ps(r.origin[KX]), oy = _mm_set1_ps(r.origin[KY]), oz = _mm_set1_ps(r.origin[KZ]);
+    const __m128 sx = _mm_set1_ps(r.sx), sy = _mm_set1_ps(r.sy), sz = _mm_set1_ps(r.sz);
+    __m128 x[3], y[3], z[3];
+    for (int k = 0; k < 3; ++k) {
+        const __m128 px = _mm_sub_ps(tri.v[k][KX], ox), py = _mm_sub_ps(tri.v[k][KY], oy);
+        z[k] = _mm_sub_ps(tri.v[k][KZ], oz);
+        x[k] = _mm_sub_ps(px, _mm_mul_ps(sx, z[k]));
+        y[k] = _mm_sub_ps(py, _mm_mul_ps(sy, z[k]));
+    }
+    // triangleEdge(c, b), (a, c), (b, a): px·qy − py·qx.
+    const __m128 u = _mm_sub_ps(_mm_mul_ps(x[2], y[1]), _mm_mul_ps(y[2], x[1]));
+    v = _mm_sub_ps(_mm_mul_ps(x[0], y[2]), _mm_mul_ps(y[0], x[2]));
+    w = _mm_sub_ps(_mm_mul_ps(x[1], y[0]), _mm_mul_ps(y[1], x[0]));
+    const __m128 zero = _mm_setzero_ps();
+    const __m128 anyZero = _mm_or_ps(_mm_cmpeq_ps(u, zero), _mm_or_ps(_mm_cmpeq_ps(v, zero), _mm_cmpeq_ps(w, zero)));
+    if (_mm_movemask_ps(anyZero)) return -1;
+    const __m128 anyNegative = _mm_or_ps(_mm_cmplt_ps(u, zero), _mm_or_ps(_mm_cmplt_ps(v, zero), _mm_cmplt_ps(w, zero)));
+    const __m128 anyPositive = _mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_or_ps(_mm_cmpgt_ps(v, zero), _mm_cmpgt_ps(w, zero)));
+    const __m128 det = _mm_add_ps(_mm_add_ps(u, v), w);
+    const __m128 tScaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, _mm_mul_ps(sz, z[0])), _mm_mul_ps(v, _mm_mul_ps(sz, z[1]))),
+                                      _mm_mul_ps(w, _mm_mul_ps(sz, z[2])));
+    invDet = _mm_div_ps(_mm_set1_ps(1.0f), det);
+    t = _mm_mul_ps(tScaled, invDet);
+    // A lane with mixed signs or det = 0 misses; so does a NaN t (the comparisons fail).
+    const __m128 inRange = _mm_and_ps(_mm_cmpgt_ps(t, _mm_set1_ps(tMin)), _mm_cmplt_ps(t, _mm_set1_ps(tMax)));
+    const __m128 hit = _mm_andnot_ps(_mm_or_ps(_mm_and_ps(anyNegative, anyPositive), _mm_cmpeq_ps(det, zero)), inRange);
+    return _mm_movemask_ps(hit);
+}
+
+inline int intersect4(const TriangleRay& r, const Triangles4& tri, float tMin, float tMax, __m128& t, __m128& invDet,
+                      __m128& v, __m128& w) {
+    if (r.kz == 2) return intersect4Along<2>(r, tri, tMin, tMax, t, invDet, v, w);
+    if (r.kz == 0) return intersect4Along<0>(r, tri, tMin, tMax, t, invDet, v, w);
+    return intersect4Along<1>(r, tri, tMin, tMax, t, invDet, v, w);
+}
+
+}  // namespace triangle_detail
+#endif
+
+// Nearest hit among the leaf's triangles[0, count), count ≤ kMaxLeafTriangles; see intersectTrianglesLoop.
+TRAZO_HD bool intersectTriangleLeaf(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin,
+                                    float tMax, TriangleHit& hit, uint32_t& which) {
+#if TRAZO_TRIANGLE_SSE
+    using namespace triangle_detail;
+    __m128 t, invDet, v, w;
+    int mask = intersect4(r, loadTriangles4(triangles, count), tMin, tMax, t, invDet, v, w);
+    if (mask < 0) return intersectTrianglesLoop(r, triangles, count, tMin, tMax, hit, which);
+    mask &= (1 << count) - 1;
+    if (!mask) return false;
+    alignas(16) float ts[4], invDets[4], vs[4], ws[4];
+    _mm_store_ps(ts, t), _mm_store_ps(invDets, invDet), _mm_store_ps(vs, v), _mm_store_ps(ws, w);
+    int best = -1;
+    for (int k = 0; k < 4; ++k)
+        if ((mask & (1 << k)) && (best < 0 || ts[k] < ts[best])) best = k;
+    hit.t = ts[best];
+    hit.b1 = vs[best] * invDets[best];
+    hit.b2 = ws[best] * invDets[best];
+    which = (uint32_t)best;
+    return true;
+#else
+    return intersectTrianglesLoop(r, triangles, count, tMin, tMax, hit, which);
+#endif
+}
+
+// Whether any of the leaf's triangles[0, count) is hit within (tMin, tMax).
+TRAZO_HD bool triangleLeafBlocks(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin,
+                                 float tMax) {
+#if TRAZO_TRIANGLE_SSE
+    using namespace triangle_detail;
+    __m128 t, invDet, v, w;
+    const int mask = intersect4(r, loadTriangles4(triangles, count), tMin, tMax, t, invDet, v, w);
+    if (mask >= 0) return (mask & ((1 << count) - 1)) != 0;
+#endif
+    TriangleHit hit;
+    for (uint32_t i = 0; i < count; ++i)
+        if (intersectTriangle(r, triangles[i].p0, triangles[i].p1, triangles[i].p2, tMin, tMax, hit)) return true;
+    return false;
+}
+
+}  // namespace trazo
