@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "accel/bvh_build.h"
-#include "accel/bvh_traverse.h"
 #include "accel/collapse_bvh.h"
 #include "core/rng.h"
-#include "geometry/intersect_triangle_leaf.h"
+#include "device/flatten_mesh.h"
 #include "geometry/tessellate.h"
+#include "integrator/scene_intersect.h"
 #include "scene/obj_reader.h"
 #if TRAZO_HAVE_EMBREE
 #include "embree_scene.h"
@@ -27,36 +27,37 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// One query of a batch: the ray, its range, and what was found (nearest t, or 1/0 for occlusion).
+// One query of a batch: the ray and its range (0, tMax), as the renderer asks them (shadow rays start a
+// little off the surface rather than at a tMin).
 struct Query {
     Ray ray;
-    float tMin, tMax;
+    float tMax;
 };
 
+// The mesh as the renderer holds it (appendMesh: BVH, wide nodes, triangles in leaf order), queried through
+// the renderer's own intersectMesh and meshBlocks, so the figures are the renderer's.
 struct TriangleScene {
-    std::vector<Vec3> triangles;  // original order
-    std::vector<MeshTriangle> ordered;  // BVH order
-    Bvh bvh;
-    std::vector<WideBvhNode> nodes;  // collapseBvh(bvh): what is traversed
+    std::vector<Vec3> triangles;  // original order (what Embree gets)
+    SceneArrays arrays;
+    SceneView view;
     Aabb bounds;
 
-    float intersect(const Ray& ray, float tMin, float tMax) const {
-        const TriangleRay tr = makeTriangleRay(ray);
-        traverseClosest(nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float& t) {
-            TriangleHit h;
-            uint32_t which;
-            if (!intersectTriangleLeaf(tr, ordered.data() + first, count, tMin, t, h, which)) return false;
-            t = h.t;
-            return true;
-        });
-        return tMax;
+    explicit TriangleScene(std::vector<Vec3> tris) : triangles(std::move(tris)) {
+        PreparedMesh mesh;
+        for (size_t i = 0; i + 2 < triangles.size(); i += 3) {
+            mesh.triangles.push_back({triangles[i], triangles[i + 1], triangles[i + 2]});
+            bounds.grow(triangleBounds(triangles[i], triangles[i + 1], triangles[i + 2]));
+        }
+        mesh.corners.resize(mesh.triangles.size());
+        appendMesh(mesh, arrays);
+        view = hostView(arrays);
     }
-    bool occluded(const Ray& ray, float tMin, float tMax) const {
-        const TriangleRay tr = makeTriangleRay(ray);
-        return traverseAny(nodes.data(), ray, tMin, tMax, [&](uint32_t first, uint32_t count, float t) {
-            return triangleLeafBlocks(tr, ordered.data() + first, count, tMin, t);
-        });
+    // Nearest t in (0, tMax), or tMax.
+    float intersect(const Ray& ray, float tMax) const {
+        ShapeHit hit;
+        return intersectMesh(view, view.meshes[0], ray, 0.0f, tMax, hit) ? hit.t : tMax;
     }
+    bool occluded(const Ray& ray, float tMax) const { return meshBlocks(view, view.meshes[0], ray, tMax); }
 };
 
 std::vector<Aabb> boundsOf(const std::vector<Vec3>& tris) {
@@ -113,24 +114,25 @@ RaySets makeRays(const TriangleScene& scene) {
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
             const float sx = (2.0f * (x + 0.5f) / kSize - 1.0f) * tanHalf, sy = (1.0f - 2.0f * (y + 0.5f) / kSize) * tanHalf;
-            sets.primary.push_back({{eye, normalize(forward + right * sx + up * sy)}, 0.0f, INFINITY});
+            sets.primary.push_back({{eye, normalize(forward + right * sx + up * sy)}, INFINITY});
         }
     std::vector<float> hits(sets.primary.size());
     parallelFor(hits.size(), std::max(1u, std::thread::hardware_concurrency()),
-                [&](size_t i) { hits[i] = scene.intersect(sets.primary[i].ray, 0.0f, INFINITY); });
+                [&](size_t i) { hits[i] = scene.intersect(sets.primary[i].ray, INFINITY); });
     const Vec3 light = eye + up * (1.5f * radius) + right * (0.5f * radius);
     const float epsilon = 1e-4f * radius;  // keeps shadow rays off the surface they start on
     for (size_t i = 0; i < hits.size(); ++i) {
         if (!std::isfinite(hits[i])) continue;
         const Vec3 p = pointAt(sets.primary[i].ray, hits[i]);
         const float distance = length(light - p);
-        sets.shadow.push_back({{p, (light - p) / distance}, epsilon, distance});
+        const Vec3 direction = (light - p) / distance;
+        sets.shadow.push_back({{p + direction * epsilon, direction}, distance - epsilon});
     }
     for (uint32_t i = 0; i < kSize * kSize; ++i) {
         auto u = [&](uint32_t d) { return bitsToUnitFloat(hashCombine(hashU32(i), d)); };
         const Vec3 o = scene.bounds.min + scene.bounds.extent() * Vec3(u(0), u(1), u(2));
         const float z = 1.0f - 2.0f * u(3), phi = 6.2831853f * u(4), s = std::sqrt(std::max(0.0f, 1.0f - z * z));
-        sets.random.push_back({{o, Vec3(s * std::cos(phi), s * std::sin(phi), z)}, 0.0f, INFINITY});
+        sets.random.push_back({{o, Vec3(s * std::cos(phi), s * std::sin(phi), z)}, INFINITY});
     }
     return sets;
 }
@@ -156,26 +158,20 @@ std::vector<Query> subsample(const std::vector<Query>& all, size_t count) {
 
 void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOptions& opt) {
     const unsigned threads = opt.threads;
-    TriangleScene scene;
-    scene.triangles = std::move(triangles);
-    const std::vector<Aabb> bounds = boundsOf(scene.triangles);
+    const std::vector<Aabb> bounds = boundsOf(triangles);
     const uint32_t count = (uint32_t)bounds.size();
     const int runs = count > 200000 ? 2 : 5;
     const double build1 = opt.build ? timeBuild(bounds, 1, runs) : 0.0,
                  buildN = opt.build ? timeBuild(bounds, threads, runs) : 0.0;
-    BvhBuildOptions options = triangleBvhOptions();
-    options.threads = threads;
-    scene.bvh = buildBvh(bounds, options);
-    scene.nodes = collapseBvh(scene.bvh);
-    for (const Aabb& b : bounds) scene.bounds.grow(b);
-    for (uint32_t id : scene.bvh.primitiveOrder)
-        scene.ordered.push_back({scene.triangles[3 * id], scene.triangles[3 * id + 1], scene.triangles[3 * id + 2]});
+    const Bvh binary = buildBvh(bounds, triangleBvhOptions());  // the tree appendMesh builds, for its statistics
+    const TriangleScene scene(std::move(triangles));
+    const std::vector<WideBvhNode>& nodes = scene.arrays.meshNodes;
 
     std::printf("\n== %s: %u triangles ==\n", name, count);
     std::printf("Trazo build: %.1f ms (1 thread), %.1f ms (%u threads); %zu binary nodes (SAH cost %.2f, depth %u) "
                 "-> %zu wide nodes (depth %u, %.1f MB)\n",
-                build1 * 1e3, buildN * 1e3, threads, scene.bvh.nodes.size(), bvhSahCost(scene.bvh), bvhDepth(scene.bvh),
-                scene.nodes.size(), wideBvhDepth(scene.nodes), scene.nodes.size() * sizeof(WideBvhNode) * 1e-6);
+                build1 * 1e3, buildN * 1e3, threads, binary.nodes.size(), bvhSahCost(binary, triangleBvhOptions()),
+                bvhDepth(binary), nodes.size(), wideBvhDepth(nodes), nodes.size() * sizeof(WideBvhNode) * 1e-6);
 
     const RaySets sets = makeRays(scene);
     struct Kind {
@@ -200,7 +196,7 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
         std::vector<float> result(rays.size());
         auto trace = [&](size_t i) {
             const Query& q = rays[i];
-            result[i] = k.shadow ? (float)scene.occluded(q.ray, q.tMin, q.tMax) : scene.intersect(q.ray, q.tMin, q.tMax);
+            result[i] = k.shadow ? (float)scene.occluded(q.ray, q.tMax) : scene.intersect(q.ray, q.tMax);
         };
         double t1 = 1e30, tN = 1e30;
 #if TRAZO_HAVE_EMBREE
@@ -208,7 +204,7 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
         std::vector<float> theirs(rays.size());
         auto traceEmbree = [&](size_t i) {
             const Query& q = rays[i];
-            theirs[i] = k.shadow ? (float)embree1.occluded(q.ray, q.tMin, q.tMax) : embree1.intersect(q.ray, q.tMin, q.tMax);
+            theirs[i] = k.shadow ? (float)embree1.occluded(q.ray, 0.0f, q.tMax) : embree1.intersect(q.ray, 0.0f, q.tMax);
         };
 #endif
         for (int r = 0; r < opt.repeat; ++r) {
