@@ -101,8 +101,8 @@ struct StackEntry {
     float tEntry;  // lets a popped node be skipped once a closer hit is known
 };
 
-// For closest-hit queries: orders the children in `mask` by entry distance: pushes all but the nearest (farthest deepest) and
-// returns the nearest. `mask` must not be 0.
+// For closest-hit queries: orders the children in `mask` by entry distance, pushes all but the nearest
+// (the farthest deepest) and returns the nearest, or kBvhEmptyLane when `mask` holds only unused lanes.
 TRAZO_HD uint32_t pushFartherChildren(const WideBvhNode& node, unsigned mask, const float tEntry[kBvhWidth],
                                       StackEntry* stack, int& size) {
     StackEntry hits[kBvhWidth];
@@ -183,6 +183,7 @@ TRAZO_HD bool traverseAny(const WideBvhNode* nodes, const Ray& ray, float tMin, 
             float tEntry[kBvhWidth];
             const unsigned mask = bvh_detail::intersectChildren(nodeRay, node, tMin, tMax, tEntry);
             if (mask) {
+                bvh_detail::prefetchChildren(nodes, node, mask);
                 ref = bvh_detail::pushLaterChildren(node, mask, stack, size);
                 if (ref != kBvhEmptyLane) continue;
             }
