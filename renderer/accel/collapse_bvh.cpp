@@ -26,7 +26,7 @@ WideBvhNode emptyWideNode() {
 }
 
 uint32_t leafRefOf(const BvhNode& leaf) {
-    if (leaf.primCount > kBvhMaxLeafSize || leaf.firstOrChild > kBvhMaxFirstPrimitive)
+    if (leaf.primCount > kBvhMaxLeafSize || leaf.firstOrChild >= kBvhMaxFirstPrimitive)
         throw std::length_error("collapseBvh: a leaf is too large or starts too far to fit a child reference");
     return bvhLeafRef(leaf.firstOrChild, leaf.primCount);
 }

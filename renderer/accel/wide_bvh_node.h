@@ -12,7 +12,8 @@ namespace trazo {
 constexpr int kBvhWidth = 4;
 
 // A child reference: an interior node's index (relative to the root), or a leaf's primitive range packed as
-// bit 31 = leaf, bits 29–30 = count − 1, bits 0–28 = first primitive.
+// bit 31 = leaf, bits 29–30 = count − 1, bits 0–28 = first primitive (< kBvhMaxFirstPrimitive, so that no
+// leaf reads as kBvhEmptyLane).
 constexpr uint32_t kBvhLeafBit = 0x80000000u;
 constexpr uint32_t kBvhMaxLeafSize = 4;
 constexpr uint32_t kBvhMaxFirstPrimitive = (1u << 29) - 1;
