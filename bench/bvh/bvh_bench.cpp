@@ -14,7 +14,7 @@
 #include "core/rng.h"
 #include "device/flatten_mesh.h"
 #include "geometry/tessellate.h"
-#include "integrator/scene_intersect.h"
+#include "backends/backend.h"
 #include "scene/obj_reader.h"
 #if TRAZO_HAVE_EMBREE
 #include "embree_scene.h"
@@ -27,15 +27,9 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// One query of a batch: the ray and its range (0, tMax), as the renderer asks them (shadow rays start a
-// little off the surface rather than at a tMin).
-struct Query {
-    Ray ray;
-    float tMax;
-};
-
-// The mesh as the renderer holds it (appendMesh: BVH, wide nodes, triangles in leaf order), queried through
-// the renderer's own intersectMesh and meshBlocks, so the figures are the renderer's.
+// The mesh as the renderer holds it (appendMesh: BVH, wide nodes, triangles in leaf order; the mesh the one
+// object of the top level), queried through the renderer's own answerRayQuery, so the figures are the
+// renderer's. Queries cover (0, tMax): shadow rays start a little off the surface, as the renderer's do.
 struct TriangleScene {
     std::vector<Vec3> triangles;  // original order (what Embree gets)
     SceneArrays arrays;
@@ -49,15 +43,12 @@ struct TriangleScene {
             bounds.grow(triangleBounds(triangles[i], triangles[i + 1], triangles[i + 2]));
         }
         mesh.corners.resize(mesh.triangles.size());
-        appendMesh(mesh, arrays);
+        arrays.objects.push_back({ObjectKind::Mesh, appendMesh(mesh, arrays), 0});
+        arrays.topNodes = collapseBvh(buildBvh({wideNodeBounds(arrays.meshNodes[0])}));
         view = hostView(arrays);
     }
-    // Nearest t in (0, tMax), or tMax.
-    float intersect(const Ray& ray, float tMax) const {
-        ShapeHit hit;
-        return intersectMesh(view, view.meshes[0], ray, 0.0f, tMax, hit) ? hit.t : tMax;
-    }
-    bool occluded(const Ray& ray, float tMax) const { return meshBlocks(view, view.meshes[0], ray, tMax); }
+    // The nearest t (+inf on a miss), or 1/0 for a shadow query.
+    float answer(const RayQuery& q, bool shadow) const { return answerRayQuery(view, q, shadow); }
 };
 
 std::vector<Aabb> boundsOf(const std::vector<Vec3>& tris) {
@@ -97,7 +88,7 @@ double parallelFor(size_t n, unsigned threads, Fn&& fn) {
 }
 
 struct RaySets {
-    std::vector<Query> primary, shadow, random;
+    std::vector<RayQuery> primary, shadow, random;
 };
 
 // Primary rays of a 1024² pinhole camera framing the mesh; shadow rays from their hits to a point light
@@ -118,7 +109,7 @@ RaySets makeRays(const TriangleScene& scene) {
         }
     std::vector<float> hits(sets.primary.size());
     parallelFor(hits.size(), std::max(1u, std::thread::hardware_concurrency()),
-                [&](size_t i) { hits[i] = scene.intersect(sets.primary[i].ray, INFINITY); });
+                [&](size_t i) { hits[i] = scene.answer(sets.primary[i], false); });
     const Vec3 light = eye + up * (1.5f * radius) + right * (0.5f * radius);
     const float epsilon = 1e-4f * radius;  // keeps shadow rays off the surface they start on
     for (size_t i = 0; i < hits.size(); ++i) {
@@ -148,9 +139,9 @@ struct BenchOptions {
     bool build = true;       // time the builds (the 1M-triangle ones take seconds)
 };
 
-std::vector<Query> subsample(const std::vector<Query>& all, size_t count) {
+std::vector<RayQuery> subsample(const std::vector<RayQuery>& all, size_t count) {
     if (count == 0 || count >= all.size()) return all;
-    std::vector<Query> out;
+    std::vector<RayQuery> out;
     const double stride = (double)all.size() / (double)count;
     for (size_t k = 0; k < count; ++k) out.push_back(all[(size_t)(k * stride)]);
     return out;
@@ -173,10 +164,20 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
                 build1 * 1e3, buildN * 1e3, threads, binary.nodes.size(), bvhSahCost(binary, triangleBvhOptions()),
                 bvhDepth(binary), nodes.size(), wideBvhDepth(nodes), nodes.size() * sizeof(WideBvhNode) * 1e-6);
 
+    // The GPU, when there is one: the same scene and queries through the CUDA backend.
+    std::string gpuStatus, error;
+    std::unique_ptr<Backend> gpu;
+    if (cudaDeviceAvailable(gpuStatus)) {
+        gpu = createBackend(BackendChoice::Cuda, 0, error);
+        if (gpu) gpu->upload(scene.arrays);
+        else gpuStatus = error;
+    }
+    std::vector<std::string> gpuLines;
+
     const RaySets sets = makeRays(scene);
     struct Kind {
         const char* name;
-        const std::vector<Query>* rays;
+        const std::vector<RayQuery>* rays;
         bool shadow;
     } kinds[] = {{"primary", &sets.primary, false}, {"shadow", &sets.shadow, true}, {"random", &sets.random, false}};
 
@@ -192,18 +193,15 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
 #endif
     for (const Kind& k : kinds) {
         if (*opt.only && std::strcmp(opt.only, k.name)) continue;
-        const std::vector<Query> rays = subsample(*k.rays, opt.rays);
+        const std::vector<RayQuery> rays = subsample(*k.rays, opt.rays);
         std::vector<float> result(rays.size());
-        auto trace = [&](size_t i) {
-            const Query& q = rays[i];
-            result[i] = k.shadow ? (float)scene.occluded(q.ray, q.tMax) : scene.intersect(q.ray, q.tMax);
-        };
+        auto trace = [&](size_t i) { result[i] = scene.answer(rays[i], k.shadow); };
         double t1 = 1e30, tN = 1e30;
 #if TRAZO_HAVE_EMBREE
         double te = 1e30;
         std::vector<float> theirs(rays.size());
         auto traceEmbree = [&](size_t i) {
-            const Query& q = rays[i];
+            const RayQuery& q = rays[i];
             theirs[i] = k.shadow ? (float)embree1.occluded(q.ray, 0.0f, q.tMax) : embree1.intersect(q.ray, 0.0f, q.tMax);
         };
 #endif
@@ -227,6 +225,23 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
 #else
         std::printf("%-8s %9zu %7.2f%% | %7.2f Mr/s %7.2f Mr/s\n", k.name, rays.size(), 100.0 * hits / rays.size(), mr1, mrN);
 #endif
+        if (gpu) {
+            // Kernel time only (ray upload and answer download excluded); agreement with the CPU's answers.
+            std::vector<float> onGpu;
+            double tg = 1e30;
+            for (int r = 0; r < opt.repeat; ++r) tg = std::min(tg, gpu->traceRays(rays, k.shadow, onGpu));
+            size_t agree = 0;
+            for (size_t i = 0; i < rays.size(); ++i) agree += std::isfinite(result[i]) == std::isfinite(onGpu[i]) &&
+                                                              (!k.shadow || result[i] == onGpu[i]);
+            gpuLines.push_back(std::string(k.name) + ": " + std::to_string(rays.size() / tg * 1e-6) + " Mr/s, " +
+                               std::to_string(100.0 * agree / rays.size()) + "% agree with the CPU");
+        }
+    }
+    if (gpu) {
+        std::printf("GPU (%s, kernel time):\n", gpu->deviceName().c_str());
+        for (const std::string& line : gpuLines) std::printf("  %s\n", line.c_str());
+    } else {
+        std::printf("GPU: not measured (%s)\n", gpuStatus.empty() ? "this build has no CUDA backend" : gpuStatus.c_str());
     }
 }
 

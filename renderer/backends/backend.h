@@ -8,6 +8,7 @@
 
 #include "device/scene_arrays.h"
 #include "integrator/frame_params.h"
+#include "integrator/ray_query.h"
 
 namespace trazo {
 
@@ -30,6 +31,9 @@ public:
     virtual void readAccumulation(std::vector<AccumPixel>& out) = 0;
     // Rays traced since the last reset.
     virtual uint64_t raysTraced() const = 0;
+    // Answers every query against the uploaded scene (answerRayQuery; benchmarks and agreement tests) into
+    // `out`. Returns the seconds spent tracing, without copies to or from the device.
+    virtual double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) = 0;
 
     // Display (the viewer): writes the current estimate, sum / count as float RGBA (alpha 1, row 0 = top),
     // into the OpenGL buffer object `glBuffer` (at least width·height·16 bytes; width × height must be the

@@ -99,6 +99,10 @@ public:
     }
     void readAccumulation(std::vector<AccumPixel>& out) override { out = accum_; }
     uint64_t raysTraced() const override { return 0; }
+    double traceRays(const std::vector<RayQuery>& queries, bool, std::vector<float>& out) override {
+        out.assign(queries.size(), INFINITY);  // no scene: nothing is hit
+        return 0.0;
+    }
 
     // A ramp plus a step whose position depends on the pixel (like a penumbra), integrated exactly below.
     static float value(uint32_t i, float u) {

@@ -2,6 +2,7 @@
 // Each pixel's sum depends only on (pixel, passes), never on which thread ran it.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <thread>
 
 #include "backends/backend.h"
@@ -80,17 +81,37 @@ public:
             }
             rays += localRays;
         };
-        std::vector<std::thread> pool;
-        for (unsigned i = 1; i < threads_; ++i) pool.emplace_back(worker);
-        worker();
-        for (auto& t : pool) t.join();
+        runOnAllThreads(worker);
         rays_ += rays.load();
     }
 
     void readAccumulation(std::vector<AccumPixel>& out) override { out = accum_; }
     uint64_t raysTraced() const override { return rays_; }
 
+    double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) override {
+        out.resize(queries.size());
+        constexpr size_t kChunk = 4096;
+        std::atomic<size_t> nextChunk{0};
+        auto worker = [&] {
+            for (size_t begin; (begin = nextChunk.fetch_add(kChunk)) < queries.size();)
+                for (size_t i = begin; i < std::min(queries.size(), begin + kChunk); ++i)
+                    out[i] = answerRayQuery(view_, queries[i], shadow);
+        };
+        const auto start = std::chrono::steady_clock::now();
+        runOnAllThreads(worker);
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+
 private:
+    // Runs `worker` on threads_ threads (this one included) and waits for all of them.
+    template <class Worker>
+    void runOnAllThreads(Worker& worker) const {
+        std::vector<std::thread> pool;
+        for (unsigned i = 1; i < threads_; ++i) pool.emplace_back(std::ref(worker));
+        worker();
+        for (auto& t : pool) t.join();
+    }
+
     unsigned threads_;
     SceneArrays arrays_;
     SceneView view_{};

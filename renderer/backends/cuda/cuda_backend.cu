@@ -43,6 +43,11 @@ __global__ void renderPassKernel(SceneView scene, FrameParams frame, uint32_t pa
     if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0 && rays) atomicAdd(rayCounter, (unsigned long long)rays);
 }
 
+__global__ void rayQueryKernel(SceneView scene, const RayQuery* queries, uint32_t count, bool shadow, float* out) {
+    const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < count) out[i] = answerRayQuery(scene, queries[i], shadow);
+}
+
 // Host-side launchers, one per specialised variant, in the table both backends share.
 template <FeatureMask F>
 void launchRenderPass(dim3 grid, dim3 block, const SceneView& scene, const FrameParams& frame, uint32_t pass,
@@ -80,11 +85,27 @@ public:
         shadow_ = host;
     }
     ArrayView<T> view() const { return ArrayView<T>{data_, (uint32_t)count_}; }
+    T* data() const { return data_; }
 
 private:
     T* data_ = nullptr;
     size_t count_ = 0, capacity_ = 0;
     std::vector<T> shadow_;  // host copy of the device contents
+};
+
+// A pair of CUDA events for timing a launch.
+struct EventTimer {
+    cudaEvent_t start = nullptr, stop = nullptr;
+    EventTimer() {
+        TRAZO_CUDA_CHECK(cudaEventCreate(&start));
+        TRAZO_CUDA_CHECK(cudaEventCreate(&stop));
+    }
+    ~EventTimer() {
+        cudaEventDestroy(start);
+        cudaEventDestroy(stop);
+    }
+    EventTimer(const EventTimer&) = delete;
+    EventTimer& operator=(const EventTimer&) = delete;
 };
 
 class CudaBackend final : public Backend {
@@ -155,6 +176,26 @@ public:
         return rays;
     }
 
+    double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) override {
+        out.assign(queries.size(), 0.0f);
+        if (queries.empty()) return 0.0;
+        queries_.assign(queries);
+        answers_.assign(out);
+        const uint32_t count = (uint32_t)queries.size();
+        constexpr uint32_t kBlock = 128;
+        const EventTimer timer;
+        TRAZO_CUDA_CHECK(cudaEventRecord(timer.start));
+        rayQueryKernel<<<(count + kBlock - 1) / kBlock, kBlock>>>(view_, queries_.data(), count, shadow,
+                                                                  answers_.data());
+        TRAZO_CUDA_CHECK(cudaGetLastError());
+        TRAZO_CUDA_CHECK(cudaEventRecord(timer.stop));
+        TRAZO_CUDA_CHECK(cudaEventSynchronize(timer.stop));
+        float milliseconds = 0.0f;
+        TRAZO_CUDA_CHECK(cudaEventElapsedTime(&milliseconds, timer.start, timer.stop));
+        TRAZO_CUDA_CHECK(cudaMemcpy(out.data(), answers_.data(), count * sizeof(float), cudaMemcpyDeviceToHost));
+        return milliseconds * 1e-3;
+    }
+
 private:
     size_t pixelCount() const { return (size_t)width_ * height_; }
 
@@ -165,6 +206,8 @@ private:
 #undef TRAZO_X
     } device_;
     SceneView view_{};
+    DeviceArray<RayQuery> queries_;  // traceRays' buffers, kept for the next call
+    DeviceArray<float> answers_;
     AccumPixel* accum_ = nullptr;
     unsigned long long* rayCounter_ = nullptr;
     uint32_t width_ = 0, height_ = 0;
