@@ -122,11 +122,11 @@ TRAZO_HD uint32_t pushFartherChildren(const WideBvhNode& node, unsigned mask, co
 // For any-hit queries: pushes the children in `mask` but the first in lane order, returns the first. Sorting
 // by distance, as closest-hit does, made shadow rays slower (bvh_bench: 1M-triangle sphere, 0.49x → 0.65x
 // of Embree), since any occluder will do.
-TRAZO_HD uint32_t pushLaterChildren(const WideBvhNode& node, unsigned mask, StackEntry* stack, int& size) {
+TRAZO_HD uint32_t pushLaterChildren(const WideBvhNode& node, unsigned mask, uint32_t* stack, int& size) {
     uint32_t first = kBvhEmptyLane;
     for (int lane = kBvhWidth - 1; lane >= 0; --lane) {
         if (!(mask & (1u << lane)) || node.child[lane] == kBvhEmptyLane) continue;
-        if (first != kBvhEmptyLane) stack[size++] = {first, 0.0f};
+        if (first != kBvhEmptyLane) stack[size++] = first;
         first = node.child[lane];
     }
     return first;
@@ -174,7 +174,7 @@ TRAZO_HD bool traverseClosest(const WideBvhNode* nodes, const Ray& ray, float tM
 template <class LeafFn>
 TRAZO_HD bool traverseAny(const WideBvhNode* nodes, const Ray& ray, float tMin, float tMax, LeafFn&& leaf) {
     const bvh_detail::NodeRay nodeRay = bvh_detail::makeNodeRay(ray);
-    bvh_detail::StackEntry stack[kBvhStackSize];
+    uint32_t stack[kBvhStackSize];  // references only: no culling by distance, so half the closest-hit stack
     int size = 0;
     uint32_t ref = 0;
     for (;;) {
@@ -191,7 +191,7 @@ TRAZO_HD bool traverseAny(const WideBvhNode* nodes, const Ray& ray, float tMin, 
             return true;
         }
         if (size == 0) return false;
-        ref = stack[--size].ref;
+        ref = stack[--size];
     }
 }
 
