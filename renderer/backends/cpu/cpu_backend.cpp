@@ -1,4 +1,5 @@
-// CPU backend: every pass runs renderSample over the image in 16×16 tiles on a pool of threads.
+// CPU backend: every pass runs renderSample over the image in 16×16 tiles on a pool of threads (ray queries:
+// chunks of rays on the same threads).
 // Each pixel's sum depends only on (pixel, passes), never on which thread ran it.
 #include <algorithm>
 #include <atomic>

@@ -1,4 +1,5 @@
-// CUDA backend: the same renderSample() as the CPU backend, one thread per pixel, one launch per pass.
+// CUDA backend: the same renderSample() as the CPU backend, one thread per pixel, one launch per pass (ray
+// queries: one thread per ray).
 #include <cuda_runtime.h>
 
 #include <cstdio>
