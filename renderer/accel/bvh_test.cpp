@@ -12,25 +12,12 @@
 #include "accel/bvh_build.h"
 #include "accel/bvh_traverse.h"
 #include "accel/collapse_bvh.h"
-#include "core/rng.h"
+#include "core/counter_uniform.h"
 #include "geometry/intersect_triangle_leaf.h"
 #include "geometry/tessellate.h"
 
 namespace trazo {
 namespace {
-
-struct Random {
-    uint32_t key, n = 0;
-    explicit Random(uint32_t seed) : key(hashU32(seed)) {}
-    float operator()(float lo, float hi) { return lo + (hi - lo) * bitsToUnitFloat(hashCombine(key, n++)); }
-    Vec3 point(float s) { return {(*this)(-s, s), (*this)(-s, s), (*this)(-s, s)}; }
-    Vec3 direction() {
-        for (;;) {
-            const Vec3 p = point(1.0f);
-            if (lengthSquared(p) > 1e-4f && lengthSquared(p) <= 1.0f) return normalize(p);
-        }
-    }
-};
 
 std::vector<Aabb> boundsOf(const std::vector<Vec3>& tris) {
     std::vector<Aabb> bounds(tris.size() / 3);
@@ -204,7 +191,7 @@ std::vector<Vec3> concat(std::vector<Vec3> a, const std::vector<Vec3>& b) {
 
 // Triangles of `count` random axis-aligned cubes: many faces share planes with node bounds.
 std::vector<Vec3> cubes(uint32_t count, uint32_t seed) {
-    Random u(seed);
+    CounterUniform u(seed);
     std::vector<Vec3> tris;
     for (uint32_t k = 0; k < count; ++k) {
         const Vec3 lo(std::round(u(-8, 8)), std::round(u(-8, 8)), std::round(u(-8, 8)));
@@ -289,7 +276,7 @@ TEST(BvhBuild, ExponentialSpacingStaysWithinMaxDepth) {
 
     // Traversal of the deep tree: rays along the row of boxes enter all of them, so the stack runs deep.
     // The nearest box a ray enters, and whether it enters any before tMax, must match testing every box.
-    Random u(7);
+    CounterUniform u(7);
     for (int i = 0; i < 2000; ++i) {
         // Odd: straight along +x inside the row (enters every box); even: backwards from far out, slightly tilted.
         const bool along = i % 2;
@@ -367,7 +354,7 @@ void expectMatchesBruteForce(const TriangleBvh& scene, const std::vector<Ray>& r
 }
 
 std::vector<Ray> randomRays(uint32_t count, uint32_t seed, float originSpread, float targetSpread) {
-    Random u(seed);
+    CounterUniform u(seed);
     std::vector<Ray> rays;
     for (uint32_t i = 0; i < count; ++i) {
         const Vec3 origin = u.point(originSpread);
@@ -402,7 +389,7 @@ TEST(BvhTraverse, ClosestMatchesBruteForceOnSpheres) {
 TEST(BvhTraverse, AxisAlignedRaysOnSlabPlanesMatchBruteForce) {
     const std::vector<Vec3> tris = cubes(200, 40);
     const TriangleBvh scene(tris);
-    Random u(41);
+    CounterUniform u(41);
     std::vector<Ray> rays;
     for (int i = 0; i < 3000; ++i) {
         // Along one axis, the other two coordinates on a random cube's face planes (or inside it).
@@ -427,7 +414,7 @@ TEST(BvhTraverse, AxisAlignedRaysOnSlabPlanesMatchBruteForce) {
 // planes, zero direction components (infinite inverses, NaN products) and signed zeros.
 TEST(BvhTraverse, SseChildTestMatchesScalarBitForBit) {
 #if TRAZO_BVH_SSE
-    Random u(50);
+    CounterUniform u(50);
     auto coordinate = [&]() {
         const float pick = u(0.0f, 4.0f);
         return pick < 1.0f ? std::round(u(-3.0f, 3.0f)) : (pick < 1.2f ? -0.0f : u(-3.0f, 3.0f));
@@ -474,7 +461,7 @@ TEST(BvhWatertight, ClosedSphereLetsNoRayThrough) {
     std::atomic<uint32_t> leaks{0}, unblocked{0};
     auto work = [&](unsigned part) {
         uint32_t localLeaks = 0, localUnblocked = 0;
-        Random u(1000 + part);
+        CounterUniform u(1000 + part);
         for (uint32_t i = part; i < kRays; i += threads) {
             Vec3 origin = center + u.direction() * u(1.5f, 4.0f), target = center + u.direction() * u(0.0f, 0.9f);
             if (i % 2) {

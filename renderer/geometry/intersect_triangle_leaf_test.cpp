@@ -8,18 +8,11 @@
 #include <cstring>
 #include <vector>
 
-#include "core/rng.h"
+#include "core/counter_uniform.h"
 #include "geometry/tessellate.h"
 
 namespace trazo {
 namespace {
-
-struct Random {
-    uint32_t key, n = 0;
-    explicit Random(uint32_t seed) : key(hashU32(seed)) {}
-    float operator()(float lo, float hi) { return lo + (hi - lo) * bitsToUnitFloat(hashCombine(key, n++)); }
-    Vec3 point(float s) { return {(*this)(-s, s), (*this)(-s, s), (*this)(-s, s)}; }
-};
 
 std::vector<MeshTriangle> toTriangles(const std::vector<Vec3>& p) {
     std::vector<MeshTriangle> out;
@@ -33,7 +26,7 @@ TEST(TriangleLeaf, FourAtOnceMatchesTheLoopBitForBit) {
     std::vector<MeshTriangle> pool = toTriangles(randomTriangleSoup(400, 1));
     for (const MeshTriangle& t : toTriangles(degenerateTriangles(400, 2))) pool.push_back(t);
     for (const MeshTriangle& t : toTriangles(tessellateSphere({0, 0, 0}, 1.0f, 8, 16))) pool.push_back(t);
-    Random u(3);
+    CounterUniform u(3);
     int hits = 0, trials = 0;
     for (size_t first = 0; first + 4 <= pool.size(); ++first) {
         for (uint32_t count = 1; count <= kMaxLeafTriangles; ++count)

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/rng.h"
+#include "core/counter_uniform.h"
 
 namespace trazo {
 namespace {
@@ -15,13 +15,6 @@ bool hitTriangle(const Ray& ray, Vec3 p0, Vec3 p1, Vec3 p2, TriangleHit& hit, fl
                  float tMax = INFINITY) {
     return intersectTriangle(makeTriangleRay(ray), p0, p1, p2, tMin, tMax, hit);
 }
-
-struct Random {
-    uint32_t key, n = 0;
-    explicit Random(uint32_t seed) : key(hashU32(seed)) {}
-    float operator()(float lo, float hi) { return lo + (hi - lo) * bitsToUnitFloat(hashCombine(key, n++)); }
-    Vec3 point(float s) { return {(*this)(-s, s), (*this)(-s, s), (*this)(-s, s)}; }
-};
 
 TEST(TriangleIntersect, AxisAlignedHitGivesExactDistanceAndBarycentrics) {
     TriangleHit hit;
@@ -84,7 +77,7 @@ TEST(TriangleIntersect, DegenerateTrianglesMiss) {
 
 // Rays aimed at random points of an edge shared by two triangles (on either side of it) hit at least one.
 TEST(TriangleIntersect, SharedEdgeNeverLetsARayThrough) {
-    Random u(7);
+    CounterUniform u(7);
     int leaks = 0;
     for (int k = 0; k < 200; ++k) {
         const Vec3 a = u.point(1.0f), b = u.point(1.0f);
@@ -114,7 +107,7 @@ TEST(TriangleIntersect, SharedEdgeNeverLetsARayThrough) {
 
 // A fan of triangles around one vertex: rays aimed at that vertex hit at least one of them.
 TEST(TriangleIntersect, SharedVertexNeverLetsARayThrough) {
-    Random u(11);
+    CounterUniform u(11);
     int leaks = 0;
     for (int k = 0; k < 100; ++k) {
         const Vec3 center = u.point(1.0f);

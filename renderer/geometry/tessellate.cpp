@@ -3,20 +3,12 @@
 
 #include <cmath>
 
-#include "core/rng.h"
+#include "core/counter_uniform.h"
 
 namespace trazo {
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
-
-// Deterministic uniform numbers from a counter (the renderer's hash), so meshes match on every platform.
-struct Uniform {
-    uint32_t key, counter = 0;
-    explicit Uniform(uint32_t seed) : key(hashU32(seed ^ 0x2545f491u)) {}
-    float operator()(float lo, float hi) { return lo + (hi - lo) * bitsToUnitFloat(hashCombine(key, counter++)); }
-    Vec3 point(float size) { return {(*this)(-size, size), (*this)(-size, size), (*this)(-size, size)}; }
-};
 
 }  // namespace
 
@@ -63,7 +55,7 @@ std::vector<Vec3> tessellateSphere(Vec3 center, float radius, uint32_t rings, ui
 }
 
 std::vector<Vec3> randomTriangleSoup(uint32_t count, uint32_t seed, float size) {
-    Uniform u(seed);
+    CounterUniform u(seed ^ 0x2545f491u);
     std::vector<Vec3> triangles;
     triangles.reserve((size_t)3 * count);
     for (uint32_t i = 0; i < 3 * count; ++i) triangles.push_back(u.point(size));
@@ -71,7 +63,7 @@ std::vector<Vec3> randomTriangleSoup(uint32_t count, uint32_t seed, float size) 
 }
 
 std::vector<Vec3> degenerateTriangles(uint32_t count, uint32_t seed) {
-    Uniform u(seed);
+    CounterUniform u(seed ^ 0x2545f491u);
     std::vector<Vec3> triangles;
     triangles.reserve((size_t)3 * count);
     for (uint32_t i = 0; i < count; ++i) {
