@@ -28,8 +28,7 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 int runHeadlessRender(const CommandLine& options) {
     ImageFormat format;
     if (!imageFormatFromPath(options.output, format)) {
-        std::fprintf(stderr, "trazo: %s: unknown image format (use .png .bmp .jpg .tga .exr .hdr or .pfm)\n",
-                     options.output.c_str());
+        std::fprintf(stderr, "trazo: %s\n", unknownImageFormatReason(options.output).c_str());
         return 2;
     }
 

@@ -390,8 +390,7 @@ int runViewer(const ViewerOptions& options) {
     if (!options.screenshot.empty()) {
         ImageFormat format;
         if (!imageFormatFromPath(options.screenshot, format)) {
-            std::fprintf(stderr, "trazo: %s: unknown image format (use .png .bmp .jpg .tga .exr .hdr or .pfm)\n",
-                         options.screenshot.c_str());
+            std::fprintf(stderr, "trazo: %s\n", unknownImageFormatReason(options.screenshot).c_str());
             return 2;
         }
     }

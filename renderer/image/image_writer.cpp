@@ -141,12 +141,16 @@ bool imageFormatFromPath(const std::string& path, ImageFormat& format) {
     return true;
 }
 
+std::string unknownImageFormatReason(const std::string& path) {
+    return "'" + path + "': unknown image extension '" + fs::path(path).extension().string() +
+           "' (use .png, .bmp, .jpg, .jpeg, .tga, .exr, .hdr or .pfm)";
+}
+
 bool writeImage(const std::string& path, int width, int height, const std::vector<Vec3>& rgbTopDown,
                 std::string& error) {
     ImageFormat format;
     if (!imageFormatFromPath(path, format)) {
-        error = "cannot write '" + path + "': unknown image extension '" + fs::path(path).extension().string() +
-                "' (use .png, .bmp, .jpg, .jpeg, .tga, .exr, .hdr or .pfm)";
+        error = "cannot write " + unknownImageFormatReason(path);
         return false;
     }
     if (width <= 0 || height <= 0 || rgbTopDown.size() != static_cast<size_t>(width) * height) {

@@ -12,6 +12,8 @@ enum class ImageFormat { Png, Bmp, Jpeg, Tga, Exr, Hdr, Pfm };
 
 // Format from the file extension (case-insensitive: .png .bmp .jpg .jpeg .tga .exr .hdr .pfm); false if unknown.
 bool imageFormatFromPath(const std::string& path, ImageFormat& format);
+// Why imageFormatFromPath(path) fails, naming the extensions it knows: "'out.xyz': unknown image extension ...".
+std::string unknownImageFormatReason(const std::string& path);
 
 // Writes a linear RGB image, rows top to bottom (pixel (0,0) = top-left), through FreeImage.
 // 8-bit formats store round(255·clamp(c,0,1)) per channel with no gamma (SPEC §5); NaN is written as 0,
