@@ -1,0 +1,20 @@
+# Helpers sourced by run_peers.sh and thesis_table.sh (bash): JSON fields, medians, wall clocks.
+
+# json_field FILE KEY: the value of a flat "KEY": value line of the stats JSON trazo --stats writes.
+json_field() {
+  sed -n "s/^ *\"$2\": *\"\{0,1\}\([^\",]*\)\"\{0,1\},\{0,1\} *$/\1/p" "$1" | head -n 1
+}
+
+# median V1 V2 ...: the middle value (the lower middle of an even count).
+median() {
+  printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'
+}
+
+# now: seconds since the epoch with nanoseconds, for whole-process wall times.
+now() { date +%s.%N; }
+
+# elapsed START END: END - START in seconds.
+elapsed() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.4f", b - a }'; }
+
+# field "rel_error 0.01 rmse ..." rel_error: the value after a name in image_error's output.
+field() { awk -v k="$2" '{ for (i = 1; i < NF; ++i) if ($i == k) { print $(i + 1); exit } }' <<<"$1"; }
