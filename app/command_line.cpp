@@ -21,6 +21,10 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         ->check(CLI::Range(1e-6, 1.0));
     app.add_flag("--fixed-grid", out.fixedGrid,
                  "The thesis's estimator: every pass evaluates every stratum of every grid (for comparisons)");
+    app.add_option("--blocks", out.blocks,
+                   "Strata of each grid per pass: auto (measured per scene), 1, whole (= --fixed-grid), or "
+                   "AA,LIGHT,INDIRECT,LIGHT_AT_INDIRECT targets, e.g. 1,100,1,5")
+        ->capture_default_str();
     const std::map<std::string, BackendChoice> backends{
         {"auto", BackendChoice::Auto}, {"cpu", BackendChoice::Cpu}, {"cuda", BackendChoice::Cuda}};
     app.add_option("--backend", out.backend, "auto (CUDA when a device is present), cpu or cuda")

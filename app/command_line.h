@@ -17,6 +17,7 @@ struct CommandLine {
     double seconds = 0.0;
     double targetError = 0.0;  // --target-error: stop once the estimated relative error is below this
     bool fixedGrid = false;    // --fixed-grid: every stratum of every grid in each pass, as the thesis did
+    std::string blocks = "auto";  // --blocks: the strata of each grid a pass takes (parseStrataBlocks)
     BackendChoice backend = BackendChoice::Auto;
     unsigned threads = 0;
     uint32_t seed = 0;

@@ -50,7 +50,18 @@ int runHeadlessRender(const CommandLine& options) {
     }
     stats.width = options.width.value_or((uint32_t)scene.settings.renderWidth);
     stats.height = options.height.value_or((uint32_t)scene.settings.renderHeight);
-    stats.fullCycle = fullCyclePasses(flat.arrays);
+    StrataBlocks blocks = headlessBlocks(flat.arrays);
+    if (options.fixedGrid) {
+        blocks = StrataBlocks::whole();
+    } else if (options.blocks != "auto") {
+        std::string why;
+        if (!parseStrataBlocks(options.blocks, blocks, why)) {
+            std::fprintf(stderr, "trazo: --blocks %s: %s\n", options.blocks.c_str(), why.c_str());
+            return 2;
+        }
+    }
+    stats.fullCycle = fullCyclePasses(flat.arrays, blocks);
+    stats.blocks = describeBlocks(blocks);
     stats.features = describeFeatures(flat.arrays.features);
     stats.parseSeconds = secondsSince(t0);
 
@@ -74,17 +85,17 @@ int runHeadlessRender(const CommandLine& options) {
         stats.uploadSeconds = secondsSince(t0);
 
         const FrameParams frame =
-            makeFrameParams(scene, stats.width, stats.height, options.seed, options.fixedGrid);
+            makeFrameParams(scene, stats.width, stats.height, options.seed, blocks);
         RenderLimits limits;
         limits.seconds = options.seconds;
         limits.targetError = options.targetError;
-        limits.cyclePasses = cyclePassesFor(flat.arrays, options.fixedGrid);
+        limits.cyclePasses = stats.fullCycle;
         if (options.targetError > 0 && !splitsHalves(limits.cyclePasses)) {
             std::fprintf(stderr, "trazo: --target-error: this scene's strata do not repeat within %u passes, so "
                                  "its error cannot be estimated; use --spp or --time\n", kMaxCyclePasses);
             return 2;
         }
-        // Default: one complete estimate (a full cycle; one pass of the fixed grid); bounded only by the
+        // Default: one complete estimate (a full cycle of the blocks); bounded only by the
         // time or the target error when either is given.
         const bool openEnded = options.seconds > 0 || options.targetError > 0;
         limits.passes = options.spp ? *options.spp : (openEnded ? kMaxProgressivePasses : limits.cyclePasses);

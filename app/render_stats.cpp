@@ -34,9 +34,9 @@ std::string formatStatsSummary(const RenderStats& s) {
     char buf[768];
     std::snprintf(buf, sizeof buf,
                   "scene creation %.4f s, upload %.4f s, render %.4f s\n"
-                  "%u x %u, %u passes (full cycle %u%s), %llu rays, %.2f Mrays/s on %s (%s)\n",
+                  "%u x %u, %u passes (full cycle %u; blocks %s%s), %llu rays, %.2f Mrays/s on %s (%s)\n",
                   s.parseSeconds, s.uploadSeconds, s.renderSeconds, s.width, s.height, s.spp, s.fullCycle,
-                  s.fixedGrid ? "; fixed grid: every pass complete" : "", (unsigned long long)s.rays,
+                  s.blocks.c_str(), s.fixedGrid ? ", the fixed grid" : "", (unsigned long long)s.rays,
                   s.mraysPerSecond(), s.backend.c_str(), s.device.c_str());
     std::string out = buf;
     if (std::isfinite(s.estimatedRelError)) {
@@ -74,6 +74,7 @@ std::string formatStatsJson(const RenderStats& s) {
     add("seed", std::to_string(s.seed));
     add("features", jsonString(s.features));
     add("fixed_grid", s.fixedGrid ? "true" : "false");
+    add("blocks", jsonString(s.blocks));
     add("estimated_rel_error", number(s.estimatedRelError));
     add("estimate_balanced", s.estimateBalanced ? "true" : "false");
     add("target_error", number(s.targetError));

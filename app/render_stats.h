@@ -18,6 +18,7 @@ struct RenderStats {
     double parseSeconds = 0, uploadSeconds = 0, renderSeconds = 0;
     uint64_t rays = 0;
     bool fixedGrid = false;             // --fixed-grid
+    std::string blocks;                 // describeBlocks of the strata a pass took
     double estimatedRelError = NAN;     // error_estimate.h; NaN when the halves cannot tell (e.g. 1 pass)
     bool estimateBalanced = false;      // passes a multiple of 2·cycle: the estimate is unbiased there
     double targetError = 0.0;           // --target-error (0 = none)

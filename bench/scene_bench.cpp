@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
             return 2;
         }
         const FlattenResult flat = flatten(scene);
-        const uint32_t cycle = fixedPasses ? fixedPasses : fullCyclePasses(flat.arrays);
+        const uint32_t cycle = fixedPasses ? fixedPasses : fullCyclePasses(flat.arrays, StrataBlocks::ones());
         for (BackendChoice choice : choices) {
             std::string error;
             auto backend = createBackend(choice, threads, error);

@@ -57,7 +57,7 @@ std::unique_ptr<Backend> Convergence::backend_;
 std::unique_ptr<Reference> Convergence::reference_;
 
 TEST_F(Convergence, SceneIsNoisyWithACycleOf16) {
-    EXPECT_EQ(fullCyclePasses(*arrays_), 16u);
+    EXPECT_EQ(fullCyclePasses(*arrays_, StrataBlocks::ones()), 16u);
     EXPECT_LT(reference_->estRelError, 0.004) << "the reference must be far better than what is measured";
 }
 
@@ -102,7 +102,7 @@ TEST_F(Convergence, TargetErrorStopsNearTheTarget) {
         backend_->resize(40, 30);
         RenderLimits limits;
         limits.passes = kMaxProgressivePasses;
-        limits.cyclePasses = fullCyclePasses(*arrays_);
+        limits.cyclePasses = fullCyclePasses(*arrays_, StrataBlocks::ones());
         limits.targetError = target;
         const RenderOutcome out = renderProgressive(*backend_, makeFrameParams(*scene_, 40, 30, 3), limits);
         ASSERT_TRUE(out.reachedTarget);
@@ -139,15 +139,21 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
     EXPECT_NE(json.find("\"estimate_balanced\": true"), std::string::npos) << json;
     EXPECT_NE(errors.find("estimated relative error"), std::string::npos) << errors;
 
-    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --target-error 0.03 --quiet --stats " + stats, errors),
-              0)
-        << errors;
-    json = readFileText(stats);
-    EXPECT_NE(json.find("\"reached_target\": true"), std::string::npos) << json;
-    EXPECT_LE(jsonNumber(json, "estimated_rel_error"), 0.03) << json;
-    const double spp = jsonNumber(json, "spp");
-    EXPECT_EQ(std::fmod(spp, 32.0), 0.0) << "stops at multiples of 2 cycles: " << json;
-    EXPECT_GT(spp, 16.0) << json;
+    // One stratum per pass (a 16-pass cycle), and the default blocks (the whole light per pass: a 1-pass cycle).
+    for (const char* blocks : {"--blocks 1", ""}) {
+        ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --target-error 0.03 --quiet --stats " + stats +
+                               " " + blocks,
+                           errors),
+                  0)
+            << errors;
+        json = readFileText(stats);
+        EXPECT_NE(json.find("\"reached_target\": true"), std::string::npos) << json;
+        EXPECT_LE(jsonNumber(json, "estimated_rel_error"), 0.03) << json;
+        const double spp = jsonNumber(json, "spp"), cycle = jsonNumber(json, "full_cycle_spp");
+        EXPECT_EQ(cycle, *blocks ? 16.0 : 1.0) << json;
+        EXPECT_EQ(std::fmod(spp, 2 * cycle), 0.0) << "stops at multiples of 2 cycles: " << json;
+        EXPECT_GT(spp, cycle) << json;
+    }
 
     // One pass has no second half: the estimate is reported as null, not as a number.
     ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --spp 1 --fixed-grid --quiet --stats " + stats, errors),

@@ -61,7 +61,7 @@ TEST(IndirectLight, OffWhenQualityOrBleedingIsZero) {
 // The thesis's estimator evaluates all 2q² directions in one pass: one pass is already within 1%.
 TEST(IndirectLight, FixedGridPassIsAWholeStratifiedEstimate) {
     const int q = 3;
-    const RenderedImage image = renderSceneText(furnaceScene(q, 1.0), {.passes = 1, .fixedGrid = true});
+    const RenderedImage image = renderSceneText(furnaceScene(q, 1.0), {.passes = 1, .blocks = StrataBlocks::whole()});
     ASSERT_FALSE(image.pixels.empty());
     EXPECT_NEAR(imageMean(image).x, 0.5 * 2.0 / M_PI, 0.01 * 0.5 * 2.0 / M_PI);
     const RenderedImage progressive = renderSceneText(furnaceScene(q, 1.0), {.passes = 1});

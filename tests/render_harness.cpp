@@ -34,11 +34,10 @@ RenderedImage renderScene(const Scene& scene, const Diagnostics& diags, const Re
     image.height = request.height ? request.height : scene.settings.renderHeight;
     backend->upload(flat.arrays);
     backend->resize(image.width, image.height);
-    FrameParams frame = makeFrameParams(scene, image.width, image.height, request.seed);
-    frame.fixedGrid = request.fixedGrid;
+    const FrameParams frame = makeFrameParams(scene, image.width, image.height, request.seed, request.blocks);
     RenderLimits limits;
     limits.passes = request.passes;
-    if (request.cycleAware) limits.cyclePasses = cyclePassesFor(flat.arrays, request.fixedGrid);
+    if (request.cycleAware) limits.cyclePasses = fullCyclePasses(flat.arrays, request.blocks);
     image.rays = renderProgressive(*backend, frame, limits).rays;
     image.pixels = readImage(*backend);
     return image;

@@ -23,7 +23,7 @@ struct RenderRequest {
     BackendChoice backend = BackendChoice::Cpu;
     bool allFeatures = false;  // run the all-features instance of renderSample (the oracle)
     int width = 0, height = 0;  // 0: the scene's RenderWidth/RenderHeight
-    bool fixedGrid = false;     // the thesis's estimator: every stratum in every pass
+    StrataBlocks blocks{};      // the strata a pass takes (StrataBlocks::whole(): the thesis's estimator)
     bool cycleAware = false;    // render as the CLI does: halves and strata windows from the scene's cycle
 };
 

@@ -25,7 +25,7 @@ for scene in scene1_area scene7_refract; do
             >"$work/viewer.log" 2>&1
         status=$?
         [ $status -eq 0 ] || { cat "$work/viewer.log"; fail "$scene: the viewer exited with $status"; }
-        "$trazo" --render "$scenes/$scene.scene" "${args[@]}" --spp 11 -o "$work/headless.$ext" --quiet \
+        "$trazo" --render "$scenes/$scene.scene" "${args[@]}" --spp 11 --blocks 1 -o "$work/headless.$ext" --quiet \
             || fail "$scene: the headless render failed"
         cmp "$work/viewer.$ext" "$work/headless.$ext" || fail "$scene: the viewer's .$ext differs from --render's"
         echo "ok: $scene .$ext: viewer screenshot == headless render"

@@ -81,7 +81,7 @@ void ViewerSession::applyEdits() {
 
 void ViewerSession::uploadScene() {
     flat_ = flatten(scene_);
-    cyclePasses_ = cyclePassesFor(flat_.arrays, false);
+    cyclePasses_ = fullCyclePasses(flat_.arrays, StrataBlocks::ones());
     backend_->upload(flat_.arrays);  // the CUDA backend re-sends only the arrays that changed
 }
 

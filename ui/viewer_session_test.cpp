@@ -175,7 +175,7 @@ TEST(ViewerSessionTest, BatchedPassesEqualTheHeadlessRender) {
     headless->resize(24, 16);
     RenderLimits limits;
     limits.passes = 11;
-    limits.cyclePasses = cyclePassesFor(flat.arrays, false);
+    limits.cyclePasses = fullCyclePasses(flat.arrays, StrataBlocks::ones());
     renderProgressive(*headless, makeFrameParams(scene, 24, 16, 7), limits);
     const std::vector<Vec3> reference = readImage(*headless);
     ASSERT_EQ(viewer.size(), reference.size());

@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
     const FlattenResult flat = flatten(scene);
     const uint32_t width = o.width ? o.width : (uint32_t)scene.settings.renderWidth;
     const uint32_t height = o.height ? o.height : (uint32_t)scene.settings.renderHeight;
-    const uint32_t cycle = fullCyclePasses(flat.arrays);
+    const uint32_t cycle = fullCyclePasses(flat.arrays, StrataBlocks::ones());
     if (!o.referencePasses) o.referencePasses = std::max(16 * cycle, 1024u);
 
     std::string why;
@@ -139,7 +139,7 @@ int main(int argc, char** argv) {
     const std::vector<ConvergencePoint> progressive = runSeries(*backend, scene, flat.arrays, ref, req);
     std::vector<ConvergencePoint> fixedGrid;
     if (o.fixedGridToo) {
-        req.fixedGrid = true;
+        req.blocks = StrataBlocks::whole();
         req.maxSeconds = progressive.empty() ? 0 : progressive.back().seconds;  // about the same time budget
         fixedGrid = runSeries(*backend, scene, flat.arrays, ref, req);
     }

@@ -34,8 +34,8 @@ struct SeriesRequest {
     uint32_t width = 0, height = 0;
     uint32_t seed = 0;
     uint32_t maxPasses = 256;
-    bool fixedGrid = false;
-    bool cycleMultiples = true;  // also read at cycle·2^k passes (progressive only), where the image is balanced
+    StrataBlocks blocks{};       // the strata a pass takes (StrataBlocks::whole(): the thesis's fixed grid)
+    bool cycleMultiples = true;  // also read at cycle·2^k passes (when a cycle is several), where the image is balanced
     double maxSeconds = 0;  // > 0: stop doubling once the render time passes this
 };
 
@@ -54,7 +54,8 @@ inline double secondsSince(std::chrono::steady_clock::time_point t0) {
 // own estimate is unbiased).
 inline Reference renderReference(Backend& backend, const Scene& scene, const SceneArrays& arrays, uint32_t width,
                                  uint32_t height, uint32_t passes, uint32_t seed) {
-    const uint32_t cycle = cyclePassesFor(arrays, false), step = splitsHalves(cycle) ? 2 * cycle : 1;
+    const StrataBlocks blocks = StrataBlocks::ones();
+    const uint32_t cycle = fullCyclePasses(arrays, blocks), step = splitsHalves(cycle) ? 2 * cycle : 1;
     Reference ref;
     ref.passes = std::max(step, (passes + step - 1) / step * step);
     backend.upload(arrays);
@@ -62,7 +63,7 @@ inline Reference renderReference(Backend& backend, const Scene& scene, const Sce
     RenderLimits limits;
     limits.passes = ref.passes;
     limits.cyclePasses = cycle;
-    ref.seconds = renderProgressive(backend, makeFrameParams(scene, width, height, seed), limits).seconds;
+    ref.seconds = renderProgressive(backend, makeFrameParams(scene, width, height, seed, blocks), limits).seconds;
     std::vector<AccumPixel> accum;
     backend.readAccumulation(accum);
     ref.estRelError = estimateError(accum).relError;
@@ -86,15 +87,15 @@ inline std::vector<uint32_t> seriesSchedule(uint32_t maxPasses, uint32_t cycle, 
 // point costs only the passes added since the previous one.
 inline std::vector<ConvergencePoint> runSeries(Backend& backend, const Scene& scene, const SceneArrays& arrays,
                                                const Reference& ref, const SeriesRequest& req) {
-    const uint32_t cycle = cyclePassesFor(arrays, req.fixedGrid);
-    const FrameParams frame = makeFrameParams(scene, req.width, req.height, req.seed, req.fixedGrid);
+    const uint32_t cycle = fullCyclePasses(arrays, req.blocks);
+    const FrameParams frame = makeFrameParams(scene, req.width, req.height, req.seed, req.blocks);
     backend.upload(arrays);
     backend.resize(req.width, req.height);
     std::vector<ConvergencePoint> points;
     std::vector<AccumPixel> accum;
     double seconds = 0;
     uint32_t done = 0;
-    for (uint32_t target : seriesSchedule(std::max(req.maxPasses, 1u), cycle, req.cycleMultiples && !req.fixedGrid)) {
+    for (uint32_t target : seriesSchedule(std::max(req.maxPasses, 1u), cycle, req.cycleMultiples)) {
         const auto t0 = std::chrono::steady_clock::now();
         renderPassRange(backend, frame, done, target - done, cycle);
         seconds += secondsSince(t0);

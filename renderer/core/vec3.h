@@ -19,6 +19,23 @@ struct Vec3 {
     TRAZO_HD float& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
 };
 
+// min and max of two floats without libm's NaN rules: on the host fminf/fmaxf are calls unless
+// -ffinite-math-only; a comparison is one minss/maxss. A NaN argument gives the second operand.
+TRAZO_HD float minOf(float a, float b) {
+#if defined(__CUDA_ARCH__)
+    return fminf(a, b);
+#else
+    return a < b ? a : b;
+#endif
+}
+TRAZO_HD float maxOf(float a, float b) {
+#if defined(__CUDA_ARCH__)
+    return fmaxf(a, b);
+#else
+    return a > b ? a : b;
+#endif
+}
+
 TRAZO_HD Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 TRAZO_HD Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 TRAZO_HD Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
@@ -42,7 +59,7 @@ TRAZO_HD Vec3 normalize(Vec3 a) { return a * (1.0f / sqrtf(dot(a, a))); }
 TRAZO_HD Vec3 abs(Vec3 a) { return {fabsf(a.x), fabsf(a.y), fabsf(a.z)}; }
 TRAZO_HD Vec3 min(Vec3 a, Vec3 b) { return {fminf(a.x, b.x), fminf(a.y, b.y), fminf(a.z, b.z)}; }
 TRAZO_HD Vec3 max(Vec3 a, Vec3 b) { return {fmaxf(a.x, b.x), fmaxf(a.y, b.y), fmaxf(a.z, b.z)}; }
-TRAZO_HD float maxComponent(Vec3 a) { return fmaxf(a.x, fmaxf(a.y, a.z)); }
+TRAZO_HD float maxComponent(Vec3 a) { return maxOf(a.x, maxOf(a.y, a.z)); }
 TRAZO_HD bool isBlack(Vec3 a) { return a.x == 0.0f && a.y == 0.0f && a.z == 0.0f; }
 TRAZO_HD bool isFinite(Vec3 a) {
 #if defined(__CUDA_ARCH__)

@@ -8,7 +8,6 @@
 #include "accel/collapse_bvh.h"
 
 #include <cmath>
-#include <numeric>
 
 namespace trazo {
 
@@ -224,17 +223,6 @@ FlattenResult flatten(const Scene& scene) {
                                          ": CSG solids have no texture coordinates: the material's textures are ignored");
     }
     return result;
-}
-
-uint32_t fullCyclePasses(const SceneArrays& a) {
-    uint64_t cycle = a.settings.antialiasing;
-    auto include = [&](uint64_t n) { cycle = std::min<uint64_t>(std::lcm(cycle, n), kMaxCyclePasses); };
-    for (const AreaLightData& l : a.areaLights) include((uint64_t)l.cellsU * l.cellsV);
-    const uint64_t q = a.settings.reflectionQuality;
-    if ((a.features & kFeatureGlossy) && q > 0) include(2 * q * q);
-    const uint64_t qi = a.settings.indirectQuality;
-    if ((a.features & kFeatureIndirect) && qi > 0) include(2 * qi * qi);
-    return (uint32_t)std::max<uint64_t>(cycle, 1);
 }
 
 std::string describeFeatures(FeatureMask mask) {

@@ -22,9 +22,4 @@ FlattenResult flatten(const Scene& scene);
 // u and v axes of an area light's rectangle (SPEC §3 AreaLight), unit length, before Width/Height.
 void areaLightAxes(Vec3 normal, float rollAngle, Vec3& u, Vec3& v);
 
-// Passes for one full cycle of every stratified grid the scene uses (antialiasing positions, area-light
-// cells, glossy strata): the least common multiple of their sizes, capped at kMaxCyclePasses.
-uint32_t fullCyclePasses(const SceneArrays& arrays);
-constexpr uint32_t kMaxCyclePasses = 1u << 16;
-
 }  // namespace trazo

@@ -1,19 +1,37 @@
-// Direct(P) of SPEC §5: point lights with hard shadows, area lights by one jittered stratum per pass.
+// Direct(P) of SPEC §5: point lights with hard shadows, area lights by a block of jittered cells per pass.
 #pragma once
 
 #include "core/rng.h"
+#include "integrator/strata.h"
 #include "integrator/scene_intersect.h"
 #include "shading/cook_torrance.h"
 #include "shading/oren_nayar.h"
 
 namespace trazo {
 
-// Shade(P, L, C) = C ⊙ [Kd·ON + Ks·CT] when N·L > 0 and N·V > 0, else 0.
-TRAZO_HD Vec3 shade(Vec3 n, Vec3 l, Vec3 v, Vec3 lightColor, const MaterialData& m) {
-    if (dot(n, l) <= 0.0f || dot(n, v) <= 0.0f) return Vec3(0.0f);
-    return lightColor * (m.diffuse * evalOrenNayar(n, l, v, m.roughness) +
-                         m.specular * evalCookTorrance(n, l, v, m.roughness));
-}
+// The material's Shade of SPEC §5 at one shading point: what depends only on the viewer is computed once,
+// and a black lobe is never evaluated (a matte surface pays no Cook–Torrance, σ = 0 no Oren–Nayar azimuth).
+struct PointBrdf {
+    Vec3 n, v;
+    Vec3 diffuse, specular;
+    float roughness;
+    OrenNayarView diffuseView;
+    bool hasDiffuse, hasSpecular;
+
+    TRAZO_HD PointBrdf(Vec3 nIn, Vec3 vIn, const MaterialData& m)
+        : n(nIn), v(vIn), diffuse(m.diffuse), specular(m.specular), roughness(m.roughness),
+          diffuseView(orenNayarView(nIn, vIn, m.roughness)), hasDiffuse(!isBlack(m.diffuse)),
+          hasSpecular(!isBlack(m.specular)) {}
+
+    TRAZO_HD bool reflects() const { return (hasDiffuse || hasSpecular) && dot(n, v) > 0.0f; }
+    // Kd·ON(N, L, V, σ) + Ks·CT(N, L, V, σ); N·L > 0 and N·V > 0 assumed.
+    TRAZO_HD Vec3 eval(Vec3 l) const {
+        Vec3 f(0.0f);
+        if (hasDiffuse) f = diffuse * evalOrenNayar(diffuseView, n, l);
+        if (hasSpecular) f += specular * evalCookTorrance(n, l, v, roughness);
+        return f;
+    }
+};
 
 // Everything a shading point needs to send shadow rays and draw its strata.
 struct ShadingPoint {
@@ -24,29 +42,9 @@ struct ShadingPoint {
     Vec3 v;   // towards the viewer
 };
 
-// Identifies one stratified grid of one shading point in the pixel's sample tree, for stratumForPass.
-struct StrataKey {
-    uint32_t seed, pixelIndex, pass, node;
-    bool fixedGrid;  // the thesis's estimator: every stratum in every pass
-    TRAZO_HD uint32_t stratum(uint32_t grid, uint32_t count) const {
-        return stratumForPass(seed, pixelIndex, hashCombine(node, grid), pass, count);
-    }
-    // The strata of a grid of `count` this pass visits: [first, first + visited). One, cycling over passes;
-    // or all of them with the fixed grid.
-    TRAZO_HD void strata(uint32_t grid, uint32_t count, uint32_t& first, uint32_t& visited) const {
-        first = fixedGrid ? 0u : stratum(grid, count);
-        visited = fixedGrid ? count : 1u;
-    }
-    TRAZO_HD StrataKey child(uint32_t branch) const {
-        return StrataKey{seed, pixelIndex, pass, hashCombine(node, branch), fixedGrid};
-    }
-};
-
-constexpr uint32_t kGridGlossy = 1;
-constexpr uint32_t kGridAreaLightBase = 16;  // + light index
-
-// One light sample X seen from the shading point: visible ⇒ Shade(P, L, C). Counts the shadow ray.
-TRAZO_HD Vec3 shadeFromPoint(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m, Vec3 x,
+// One light sample X seen from the shading point: visible ⇒ Shade(P, L, C) = C ⊙ brdf(L). Counts the
+// shadow ray.
+TRAZO_HD Vec3 shadeFromPoint(const SceneView& scene, const ShadingPoint& sp, const PointBrdf& brdf, Vec3 x,
                              Vec3 color, uint32_t& rays) {
     Vec3 toLight = x - sp.p;
     const float dist = length(toLight);
@@ -56,32 +54,34 @@ TRAZO_HD Vec3 shadeFromPoint(const SceneView& scene, const ShadingPoint& sp, con
     const Vec3 origin = offsetRayOrigin(sp.p, sp.pError, sp.ng, l);
     ++rays;
     if (occluded(scene, Ray{origin, l}, length(x - origin))) return Vec3(0.0f);
-    return shade(sp.n, l, sp.v, color, m);
+    return color * brdf.eval(l);
 }
 
 // F: the scene's specialised feature bits (sample_variants.h); without kFeatureAreaLights the area-light
-// loop is compiled out.
+// loop is compiled out. lightBlock: the StrataBlocks target for the area lights' cells at this point.
 template <FeatureMask F>
 TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
-                          const StrataKey& strata, SampleStream& rng, uint32_t& rays) {
+                          const StrataKey& strata, uint32_t lightBlock, SampleStream& rng, uint32_t& rays) {
     Vec3 sum(0.0f);
+    const PointBrdf brdf(sp.n, sp.v, m);
+    if (!brdf.reflects()) return sum;  // Shade is 0 for every light: no shadow rays
     for (uint32_t i = 0; i < scene.pointLights.count; ++i) {
         const PointLightData& light = scene.pointLights[i];
-        sum += shadeFromPoint(scene, sp, m, light.position, light.color, rays);
+        sum += shadeFromPoint(scene, sp, brdf, light.position, light.color, rays);
     }
     if constexpr ((F & kFeatureAreaLights) != 0) {
     for (uint32_t i = 0; i < scene.areaLights.count; ++i) {
         const AreaLightData& light = scene.areaLights[i];
-        uint32_t first, visited;
-        strata.strata(kGridAreaLightBase + i, light.cellsU * light.cellsV, first, visited);
+        const StrataBlock cells = strata.block(kGridAreaLightBase + i, light.cellsU * light.cellsV, lightBlock);
         Vec3 lightSum(0.0f);
-        for (uint32_t s = first; s < first + visited; ++s) {
+        for (uint32_t j = 0; j < cells.size; ++j) {
+            const uint32_t s = cells.stratum(j);
             const float su = (float(s % light.cellsU) + rng.next()) / float(light.cellsU);
             const float sv = (float(s / light.cellsU) + rng.next()) / float(light.cellsV);
             const Vec3 x = light.rect.center + light.rect.halfU * (2.0f * su - 1.0f) + light.rect.halfV * (2.0f * sv - 1.0f);
-            lightSum += shadeFromPoint(scene, sp, m, x, light.color, rays);
+            lightSum += shadeFromPoint(scene, sp, brdf, x, light.color, rays);
         }
-        sum += visited == 1 ? lightSum : lightSum / float(visited);
+        sum += cells.size == 1 ? lightSum : lightSum / float(cells.size);
     }
     }
     return sum;

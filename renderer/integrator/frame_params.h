@@ -5,14 +5,15 @@
 
 #include "core/rng.h"
 #include "integrator/camera_frame.h"
+#include "integrator/strata.h"
 
 namespace trazo {
 
 struct FrameParams {
     CameraFrame camera;
     uint32_t seed = 0;
-    // The thesis's estimator (--fixed-grid): every pass evaluates every stratum of every grid instead of one.
-    bool fixedGrid = false;
+    // The strata of each grid a pass evaluates (strata.h); StrataBlocks::whole() is the thesis's estimator.
+    StrataBlocks blocks{};
     // Passes alternate between the accumulation's two halves in blocks of this many (0: no second half);
     // progressive_render.h chooses it so both halves are equally stratified.
     uint32_t halfBlock = 0;

@@ -15,7 +15,6 @@ namespace trazo {
 
 constexpr int kMaxPendingRays = 32;                 // a branch that would overflow contributes 0
 constexpr uint32_t kMaxTransmissionSegments = 16;   // SPEC §5: longer chains contribute 0
-constexpr uint32_t kGridAntialiasing = 0x41414141u;
 
 struct PendingRay {
     Ray ray;
@@ -24,8 +23,6 @@ struct PendingRay {
     uint32_t segments;  // transmission segments in the current chain
     uint32_t node;      // identifies this ray in the pixel's sample tree (decorrelates its strata)
 };
-
-TRAZO_HD uint32_t antialiasingSide(uint32_t antialiasing) { return antialiasing >= 16 ? 4u : (antialiasing >= 4 ? 2u : 1u); }
 
 // Antialiasing position s of the k×k sub-pixel centres (SPEC §5 Pixel).
 TRAZO_HD void antialiasingPosition(uint32_t k, uint32_t s, uint32_t px, uint32_t py, float& x, float& y) {
@@ -55,7 +52,7 @@ TRAZO_HD Vec3 sampleReflection(const ShadingPoint& sp, Vec3 d, const MaterialDat
 // Color(0) along a camera ray: the whole tree of reflected and transmitted rays, as an explicit stack.
 template <FeatureMask F>
 TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const StrataKey& pixelStrata,
-                             SampleStream& rng, uint32_t& rays) {
+                             const StrataBlocks& blocks, SampleStream& rng, uint32_t& rays) {
     const RenderSettings& settings = scene.settings;
     PendingRay stack[kMaxPendingRays];
     int pending = 0;
@@ -101,15 +98,14 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         }
 
         const ShadingPoint sp = facingShadingPoint(p, pError, d, surface);
-        const StrataKey strata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass, r.node,
-                               pixelStrata.fixedGrid};
+        const StrataKey strata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass, r.node};
 
         const float a = kReflection && materialReflects(m, settings, r.reflectionDepth) ? m.reflectionAmount : 0.0f;
         const float directWeight = (1.0f - a) * m.opacity;  // 0 for pure mirrors and clear glass: no shadow rays
         Vec3 local(0.0f);
         if (directWeight > 0.0f) {
-            local = directLight<F>(scene, sp, m, strata, rng, rays);
-            if constexpr (kIndirect) local += indirectLight<F>(scene, sp, m, strata, rng, rays);
+            local = directLight<F>(scene, sp, m, strata, blocks.areaLight, rng, rays);
+            if constexpr (kIndirect) local += indirectLight<F>(scene, sp, m, strata, blocks, rng, rays);
         }
         color += r.weight * (local * directWeight + m.emissive);
 
@@ -131,23 +127,22 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
     return color;
 }
 
-// One sample of one pixel: the pass's antialiasing position (all of them with the fixed grid, averaged).
+// One sample of one pixel: the pass's block of antialiasing positions, averaged.
 template <FeatureMask F>
 TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
                            uint32_t pass, uint32_t& rays) {
     const uint32_t pixelIndex = py * frame.camera.width + px;
     SampleStream rng(frame.seed, pixelIndex, pass);
-    const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, 1u, frame.fixedGrid};
+    const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, 1u};
     const uint32_t k = antialiasingSide(scene.settings.antialiasing);
-    uint32_t first, visited;
-    pixelStrata.strata(kGridAntialiasing, k * k, first, visited);
+    const StrataBlock positions = pixelStrata.block(kGridAntialiasing, k * k, frame.blocks.antialiasing);
     Vec3 color(0.0f);
-    for (uint32_t s = first; s < first + visited; ++s) {
+    for (uint32_t j = 0; j < positions.size; ++j) {
         float x, y;
-        antialiasingPosition(k, s, px, py, x, y);
-        color += traceCameraRay<F>(scene, generateCameraRay(frame.camera, x, y), pixelStrata, rng, rays);
+        antialiasingPosition(k, positions.stratum(j), px, py, x, y);
+        color += traceCameraRay<F>(scene, generateCameraRay(frame.camera, x, y), pixelStrata, frame.blocks, rng, rays);
     }
-    return visited == 1 ? color : color / float(visited);
+    return positions.size == 1 ? color : color / float(positions.size);
 }
 
 }  // namespace trazo

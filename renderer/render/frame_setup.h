@@ -5,20 +5,15 @@
 #include "backends/backend.h"
 #include "device/flatten.h"
 #include "render/resolve.h"
+#include "render/strata_plan.h"
 #include "scene/scene.h"
 
 namespace trazo {
 
 inline FrameParams makeFrameParams(const Scene& scene, uint32_t width, uint32_t height, uint32_t seed,
-                                   bool fixedGrid = false) {
+                                   const StrataBlocks& blocks = StrataBlocks::ones()) {
     const Camera& c = scene.camera;
-    return FrameParams{makeCameraFrame(c.pov, c.poi, c.fovDegrees, width, height), seed, fixedGrid};
-}
-
-// The passes after which every stratum has been taken equally often (RenderLimits::cyclePasses): one full
-// cycle, or 1 for the fixed-grid estimator, whose every pass is a complete estimate.
-inline uint32_t cyclePassesFor(const SceneArrays& arrays, bool fixedGrid) {
-    return fixedGrid ? 1u : fullCyclePasses(arrays);
+    return FrameParams{makeCameraFrame(c.pov, c.poi, c.fovDegrees, width, height), seed, blocks};
 }
 
 // The backend's current estimate, sum / count per pixel (row 0 = top).

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 
-#include "device/flatten.h"
 #include "render/error_estimate.h"
 
 namespace trazo {

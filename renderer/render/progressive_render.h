@@ -7,14 +7,15 @@
 #include <functional>
 
 #include "backends/backend.h"
+#include "render/strata_plan.h"
 
 namespace trazo {
 
 // The two halves (AccumPixel::sumB). Passes v = 0, 1, 2, … alternate between the halves in blocks of
-// halfBlockPasses(cycle) passes, the largest power of two dividing the scene's full cycle. Every grid has
-// N | cycle strata and pass v takes stratum σ(v mod N) (σ a per-pixel permutation), so over any 2·cycle
-// passes from 0 each half takes every stratum of every grid equally often (the block length absorbs N's
-// factor 2^a; passes v and v + N fall in different halves because N / block is odd). Both halves are then
+// halfBlockPasses(cycle) passes, the largest power of two dividing the scene's full cycle. Every grid is
+// walked in N | cycle blocks and pass v takes block v mod N (strata.h), so over any 2·cycle passes from 0
+// each half takes every block of every grid equally often (the half block absorbs N's factor 2^a; passes v
+// and v + N fall in different halves because N / halfBlock is odd). Both halves are then
 // equally stratified, independent estimates and their difference measures the error of the whole
 // (error_estimate.h). At other pass counts the halves hold unequal sets of strata and the estimate is rough.
 // cyclePasses = 0 (the default), or a cycle that hit kMaxCyclePasses (then not every grid divides it), makes
@@ -31,8 +32,7 @@ struct RenderLimits {
     uint32_t passes = 1;       // stop after this many passes (capped at kMaxProgressivePasses)
     double seconds = 0.0;      // and after this wall time, when > 0 (whichever comes first)
     double targetError = 0.0;  // and once estimateError(...).relError <= this, when > 0
-    // The scene's full cycle (cyclePassesFor: fullCyclePasses, or 1 with FrameParams::fixedGrid, where every
-    // pass is complete): sets the half split, and the target error is checked only at multiples of
+    // The scene's full cycle for the frame's blocks (fullCyclePasses): sets the half split, and the target error is checked only at multiples of
     // 2·cyclePasses, where the estimate is unbiased (and a stratified image is at its best). 0: no halves
     // and no target error.
     uint32_t cyclePasses = 0;

@@ -8,9 +8,9 @@ namespace trazo {
 // CT = π·D·G / (4·(N·V)), D = exp(−tan²θH/m²)/(π m² cos⁴θH), m = max(roughness, 0.01).
 // N, L, V unit; N·L > 0 and N·V > 0 assumed.
 TRAZO_HD float evalCookTorrance(Vec3 n, Vec3 l, Vec3 v, float roughness) {
-    const float m = fmaxf(roughness, 0.01f);
+    const float m = maxOf(roughness, 0.01f);
     const Vec3 h = normalize(l + v);
-    const float nh = fminf(dot(n, h), 1.0f);
+    const float nh = minOf(dot(n, h), 1.0f);
     const float nv = dot(n, v);
     const float nl = dot(n, l);
     const float vh = dot(v, h);
@@ -20,7 +20,7 @@ TRAZO_HD float evalCookTorrance(Vec3 n, Vec3 l, Vec3 v, float roughness) {
     const float m2 = m * m;
     // π·D with the π of D cancelled.
     const float piD = expf(-tan2 / m2) / (m2 * nh2 * nh2);
-    const float g = fminf(1.0f, fminf(2.0f * nh * nv / vh, 2.0f * nh * nl / vh));
+    const float g = minOf(1.0f, 2.0f * nh * minOf(nv, nl) / vh);
     return piD * g / (4.0f * nv);
 }
 

@@ -5,26 +5,42 @@
 
 namespace trazo {
 
-// ON(N, L, V, σ) = (N·L)·(A + B·max(0, cos(φL−φV))·sin α·tan β). N, L, V unit; N·L > 0 and N·V > 0 assumed.
-// With σ = 0, B = 0 and A = 1, so the result is exactly N·L.
-TRAZO_HD float evalOrenNayar(Vec3 n, Vec3 l, Vec3 v, float sigma) {
-    const float cosL = fminf(dot(n, l), 1.0f);
-    const float cosV = fminf(dot(n, v), 1.0f);
+// What ON needs of the viewer and σ, computed once per shading point and reused for every light sample.
+struct OrenNayarView {
+    float a, b;       // A = 1 − σ²/(2(σ²+0.33)), B = 0.45σ²/(σ²+0.09)
+    float cosV, sinV;
+    Vec3 vt;          // V projected on the tangent plane, unit (0 when V ∥ N)
+};
+
+TRAZO_HD OrenNayarView orenNayarView(Vec3 n, Vec3 v, float sigma) {
     const float s2 = sigma * sigma;
-    const float a = 1.0f - 0.5f * s2 / (s2 + 0.33f);
-    const float b = 0.45f * s2 / (s2 + 0.09f);
-    if (b == 0.0f) return cosL * a;
-    // cos(φL − φV) from the projections of L and V on the tangent plane.
-    const Vec3 lt = l - n * cosL;
-    const Vec3 vt = v - n * cosV;
-    const float tangentLengths = sqrtf(lengthSquared(lt) * lengthSquared(vt));
-    const float cosPhi = tangentLengths > 0.0f ? fmaxf(0.0f, dot(lt, vt) / tangentLengths) : 0.0f;
-    // α = max(θL, θV) has the smaller cosine; β = min(θL, θV) the larger.
-    const float cosAlpha = fminf(cosL, cosV);
-    const float cosBeta = fmaxf(cosL, cosV);
-    const float sinAlpha = sqrtf(fmaxf(0.0f, 1.0f - cosAlpha * cosAlpha));
-    const float tanBeta = sqrtf(fmaxf(0.0f, 1.0f - cosBeta * cosBeta)) / cosBeta;
-    return cosL * (a + b * cosPhi * sinAlpha * tanBeta);
+    OrenNayarView w;
+    w.a = 1.0f - 0.5f * s2 / (s2 + 0.33f);
+    w.b = 0.45f * s2 / (s2 + 0.09f);
+    w.cosV = minOf(dot(n, v), 1.0f);
+    w.sinV = sqrtf(maxOf(0.0f, 1.0f - w.cosV * w.cosV));
+    const Vec3 vt = v - n * w.cosV;
+    const float vt2 = lengthSquared(vt);
+    w.vt = vt2 > 0.0f ? vt * (1.0f / sqrtf(vt2)) : Vec3(0.0f);
+    return w;
+}
+
+// ON(N, L, V, σ) = (N·L)·(A + B·max(0, cos(φL−φV))·sin α·tan β), α = max(θL, θV), β = min(θL, θV).
+// N, L, V unit; N·L > 0 and N·V > 0 assumed. With |Lt| = sin θL the azimuth term is
+// cos(φL−φV)·sin θL = L·V̂t, so no square root is left per light:
+//     θL ≥ θV:  B·max(0, L·V̂t)·tan θV·cos θL,     θL < θV:  B·max(0, L·V̂t)·sin θV.
+// With σ = 0, B = 0 and A = 1, so the result is exactly N·L.
+TRAZO_HD float evalOrenNayar(const OrenNayarView& w, Vec3 n, Vec3 l) {
+    const float cosL = minOf(dot(n, l), 1.0f);
+    if (w.b == 0.0f) return cosL * w.a;
+    const float azimuth = maxOf(0.0f, dot(l, w.vt));
+    // cos θL ≤ cos θV keeps cosL / cosV ≤ 1, so a grazing viewer cannot overflow tan θV.
+    const float slope = cosL <= w.cosV ? (cosL / w.cosV) * w.sinV : w.sinV;
+    return cosL * w.a + w.b * azimuth * slope;
+}
+
+TRAZO_HD float evalOrenNayar(Vec3 n, Vec3 l, Vec3 v, float sigma) {
+    return evalOrenNayar(orenNayarView(n, v, sigma), n, l);
 }
 
 }  // namespace trazo

@@ -1,0 +1,81 @@
+// The stratified grids of SPEC §5 (antialiasing positions, area-light cells, indirect directions, glossy
+// cones) and which of their strata a pass evaluates. A pass takes one *block* of each grid at every hit it
+// reaches: a grid of N strata in blocks of b (b | N) has P = N/b blocks, and pass v evaluates block
+// σ(v mod P), σ a permutation drawn per pixel and per grid. Every P consecutive passes therefore visit every
+// stratum once, and the rays above a grid (the camera ray, the
+// reflected, refracted and indirect rays) are traced once per block instead of once per stratum — the
+// thesis's own nesting. Blocks of 1 are the plain progressive render; blocks covering every grid are the
+// thesis's estimator (--fixed-grid).
+#pragma once
+
+#include <cstdint>
+
+#include "core/rng.h"
+
+namespace trazo {
+
+// Grid identities within a shading point's key (hashCombine(node, grid)).
+constexpr uint32_t kGridGlossy = 1;
+constexpr uint32_t kGridIndirect = 2;
+constexpr uint32_t kGridAreaLightBase = 16;  // + light index
+constexpr uint32_t kGridAntialiasing = 0x41414141u;
+
+constexpr uint32_t kWholeGrid = 0xffffffffu;
+
+// The block size a pass asks of each kind of grid. A value is a target: a grid of N strata uses the
+// largest divisor of N that is at most the target (blockFor), so one value fits grids of every size.
+// Glossy cones stay one stratum per pass: a block of them would multiply the pending rays of every bounce.
+struct StrataBlocks {
+    uint32_t antialiasing = 1;     // camera-ray positions per pixel and pass
+    uint32_t areaLight = 1;        // cells of each area light at a camera-path shading point
+    uint32_t indirect = 1;         // indirect directions at a camera-path shading point
+    uint32_t lightAtIndirect = 1;  // cells of each area light at the point Q an indirect ray finds
+
+    static constexpr StrataBlocks ones() { return StrataBlocks{}; }
+    static constexpr StrataBlocks whole() { return StrataBlocks{kWholeGrid, kWholeGrid, kWholeGrid, kWholeGrid}; }
+    constexpr bool operator==(const StrataBlocks&) const = default;
+};
+
+// The largest divisor of count (≥ 1) that is at most target: a block that tiles the grid exactly. Costs at
+// most target − result steps, none for a whole grid or a block of 1.
+TRAZO_HD uint32_t blockFor(uint32_t count, uint32_t target) {
+    if (target >= count) return count;
+    if (target <= 1u) return 1u;
+    uint32_t b = target;
+    while (count % b != 0u) --b;
+    return b;
+}
+
+// The strata of one grid a pass evaluates: stratum(j) for j ∈ [0, size). The grid's count/size blocks are
+// the residues modulo count/size (block o holds o, o + P, o + 2P, …), so each block spreads over the whole
+// grid, and a pass's block is drawn by one permutation of the P blocks rather than one per stratum.
+struct StrataBlock {
+    uint32_t offset;  // the block this pass takes, in [0, blocks)
+    uint32_t blocks;  // count / size: the passes of the grid's cycle
+    uint32_t size;
+    TRAZO_HD uint32_t stratum(uint32_t j) const { return offset + j * blocks; }
+};
+
+// Identifies the grids of one shading point in the pixel's sample tree.
+struct StrataKey {
+    uint32_t seed, pixelIndex, pass, node;
+
+    // Block pass mod P of the grid's P blocks, in an order drawn per pixel and per grid (stratumForPass).
+    TRAZO_HD StrataBlock block(uint32_t grid, uint32_t count, uint32_t target) const {
+        const uint32_t size = blockFor(count, target);
+        const uint32_t blocks = count / size;
+        const uint32_t offset = blocks == 1 ? 0u : stratumForPass(seed, pixelIndex, hashCombine(node, grid), pass, blocks);
+        return StrataBlock{offset, blocks, size};
+    }
+    // One stratum of a grid per pass (glossy cones).
+    TRAZO_HD uint32_t stratum(uint32_t grid, uint32_t count) const { return block(grid, count, 1u).stratum(0); }
+    TRAZO_HD StrataKey child(uint32_t branch) const { return StrataKey{seed, pixelIndex, pass, hashCombine(node, branch)}; }
+};
+
+// The antialiasing grid is k×k sub-pixel positions (SPEC §5 Pixel).
+TRAZO_HD uint32_t antialiasingSide(uint32_t antialiasing) { return antialiasing >= 16 ? 4u : (antialiasing >= 4 ? 2u : 1u); }
+
+// The passes after which a grid of `count` strata in blocks of `target` has visited every stratum once.
+TRAZO_HD uint32_t blockPasses(uint32_t count, uint32_t target) { return count / blockFor(count, target); }
+
+}  // namespace trazo

@@ -1,0 +1,83 @@
+#include "render/strata_plan.h"
+
+#include <algorithm>
+#include <charconv>
+#include <numeric>
+#include <vector>
+
+#include "device/feature_mask.h"
+
+namespace trazo {
+
+uint32_t fullCyclePasses(const SceneArrays& a, const StrataBlocks& blocks) {
+    uint64_t cycle = 1;
+    auto include = [&](uint64_t count, uint32_t target) {
+        if (count == 0) return;
+        const uint64_t passes = count > UINT32_MAX ? count : blockPasses((uint32_t)count, target);
+        cycle = std::min<uint64_t>(std::lcm(cycle, passes), kMaxCyclePasses);
+    };
+    const uint64_t k = antialiasingSide(a.settings.antialiasing);
+    include(k * k, blocks.antialiasing);
+    const bool indirect = (a.features & kFeatureIndirect) && a.settings.indirectQuality > 0;
+    for (const AreaLightData& l : a.areaLights) {
+        include((uint64_t)l.cellsU * l.cellsV, blocks.areaLight);
+        if (indirect) include((uint64_t)l.cellsU * l.cellsV, blocks.lightAtIndirect);
+    }
+    const uint64_t q = a.settings.reflectionQuality;
+    if ((a.features & kFeatureGlossy) && q > 0) include(2 * q * q, 1u);
+    const uint64_t qi = a.settings.indirectQuality;
+    if (indirect) include(2 * qi * qi, blocks.indirect);
+    return (uint32_t)cycle;
+}
+
+StrataBlocks headlessBlocks(const SceneArrays& arrays) {
+    (void)arrays;
+    StrataBlocks b;
+    b.areaLight = kWholeGrid;
+    b.indirect = kWholeGrid;
+    return b;
+}
+
+namespace {
+
+bool parseTarget(const std::string& text, uint32_t& out) {
+    if (text == "whole") {
+        out = kWholeGrid;
+        return true;
+    }
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, out);
+    return ec == std::errc() && ptr == end && out >= 1;
+}
+
+std::string describeTarget(uint32_t t) { return t == kWholeGrid ? "whole" : std::to_string(t); }
+
+}  // namespace
+
+bool parseStrataBlocks(const std::string& text, StrataBlocks& out, std::string& why) {
+    std::vector<std::string> parts;
+    for (size_t start = 0;;) {
+        const size_t comma = text.find(',', start);
+        parts.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    uint32_t t[4];
+    if (parts.size() == 1 && parseTarget(parts[0], t[0])) {
+        t[1] = t[2] = t[3] = t[0];
+    } else if (parts.size() == 4 && parseTarget(parts[0], t[0]) && parseTarget(parts[1], t[1]) &&
+               parseTarget(parts[2], t[2]) && parseTarget(parts[3], t[3])) {
+    } else {
+        why = "expected auto, one target, or four comma-separated targets (each a positive integer or whole)";
+        return false;
+    }
+    out = StrataBlocks{t[0], t[1], t[2], t[3]};
+    return true;
+}
+
+std::string describeBlocks(const StrataBlocks& b) {
+    return describeTarget(b.antialiasing) + "," + describeTarget(b.areaLight) + "," + describeTarget(b.indirect) +
+           "," + describeTarget(b.lightAtIndirect);
+}
+
+}  // namespace trazo

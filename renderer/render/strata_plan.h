@@ -1,0 +1,30 @@
+// How a render walks the scene's stratified grids: the blocks each pass takes (integrator/strata.h) and the
+// passes that make one full cycle of every grid. Host code.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "device/scene_arrays.h"
+#include "integrator/strata.h"
+
+namespace trazo {
+
+constexpr uint32_t kMaxCyclePasses = 1u << 16;
+
+// Passes for one full cycle of every stratified grid the scene uses (antialiasing positions, area-light
+// cells at camera-path points and at indirect hits, glossy strata, indirect directions), each in its blocks:
+// the least common multiple of the grids' block counts, capped at kMaxCyclePasses. After a cycle every
+// stratum of every grid has been evaluated equally often.
+uint32_t fullCyclePasses(const SceneArrays& arrays, const StrataBlocks& blocks);
+
+// The blocks a headless render takes: chosen from measurement (bench/scene_bench.cpp --blocks-sweep), see
+// the definition for the rule and its numbers.
+StrataBlocks headlessBlocks(const SceneArrays& arrays);
+
+// --blocks: "1" (one stratum of every grid per pass), "whole" (every stratum: the thesis's estimator), or
+// four targets "AA,LIGHT,INDIRECT,LIGHT_AT_INDIRECT" (positive integers or "whole"). False with the reason.
+bool parseStrataBlocks(const std::string& text, StrataBlocks& out, std::string& why);
+std::string describeBlocks(const StrataBlocks& blocks);  // the four targets, as parseStrataBlocks reads them
+
+}  // namespace trazo
