@@ -95,10 +95,11 @@ int runHeadlessRender(const CommandLine& options) {
                                  "its error cannot be estimated; use --spp or --time\n", kMaxCyclePasses);
             return 2;
         }
-        // Default: one complete estimate (a full cycle of the blocks); bounded only by the
-        // time or the target error when either is given.
+        // Default: one complete estimate (every stratum of every grid on the camera path once:
+        // cameraPathPasses); bounded only by the time or the target error when either is given.
         const bool openEnded = options.seconds > 0 || options.targetError > 0;
-        limits.passes = options.spp ? *options.spp : (openEnded ? kMaxProgressivePasses : limits.cyclePasses);
+        limits.passes = options.spp ? *options.spp
+                                    : (openEnded ? kMaxProgressivePasses : cameraPathPasses(flat.arrays, blocks));
         ProgressBar bar(!options.quiet, options.seconds);
         const RenderOutcome outcome =
             renderProgressive(*backend, frame, limits, [&](const RenderProgress& p) { bar.update(p); });

@@ -35,10 +35,11 @@ TEST(StrataBlocks, EveryCycleVisitsEveryStratumOnce) {
             const uint32_t passes = blockPasses(count, target);
             for (uint32_t pixel = 0; pixel < 40; ++pixel) {
                 for (uint32_t cycle : {0u, 3u}) {
+                  for (uint32_t rotation : {0u, 5u}) {
                     std::vector<int> seen(count, 0);
                     for (uint32_t pass = cycle * passes; pass < (cycle + 1) * passes; ++pass) {
                         const StrataKey key{7u, pixel, pass, 1u};
-                        const StrataBlock b = key.block(kGridAreaLightBase, count, target);
+                        const StrataBlock b = key.block(kGridAreaLightBase, count, target, rotation);
                         ASSERT_EQ(b.size, blockFor(count, target));
                         for (uint32_t j = 0; j < b.size; ++j) {
                             const uint32_t s = b.stratum(j);
@@ -48,9 +49,21 @@ TEST(StrataBlocks, EveryCycleVisitsEveryStratumOnce) {
                     }
                     for (uint32_t s = 0; s < count; ++s)
                         ASSERT_EQ(seen[s], 1) << "count " << count << " target " << target << " stratum " << s;
+                  }
                 }
             }
         }
+    }
+}
+
+// The points Q of one pass's indirect directions share a key; rotated by the direction's index, up to P of
+// them take P different blocks of the light in the same pass.
+TEST(StrataBlocks, RotatedDirectionsTakeDifferentBlocksInOnePass) {
+    for (uint32_t pass = 0; pass < 30; ++pass) {
+        const StrataKey key{2u, 9u, pass, 77u};
+        std::vector<int> taken(25, 0);
+        for (uint32_t direction = 0; direction < 18; ++direction) ++taken[key.block(kGridAreaLightBase, 25, 1, direction).offset];
+        for (int t : taken) ASSERT_LE(t, 1);
     }
 }
 

@@ -58,10 +58,12 @@ TRAZO_HD Vec3 shadeFromPoint(const SceneView& scene, const ShadingPoint& sp, con
 }
 
 // F: the scene's specialised feature bits (sample_variants.h); without kFeatureAreaLights the area-light
-// loop is compiled out. lightBlock: the StrataBlocks target for the area lights' cells at this point.
+// loop is compiled out. lightBlock: the StrataBlocks target for the area lights' cells at this point;
+// rotation: StrataKey::block's (the index of the indirect direction that found this point).
 template <FeatureMask F>
 TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
-                          const StrataKey& strata, uint32_t lightBlock, SampleStream& rng, uint32_t& rays) {
+                          const StrataKey& strata, uint32_t lightBlock, uint32_t rotation, SampleStream& rng,
+                          uint32_t& rays) {
     Vec3 sum(0.0f);
     const PointBrdf brdf(sp.n, sp.v, m);
     if (!brdf.reflects()) return sum;  // Shade is 0 for every light: no shadow rays
@@ -72,7 +74,7 @@ TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const 
     if constexpr ((F & kFeatureAreaLights) != 0) {
     for (uint32_t i = 0; i < scene.areaLights.count; ++i) {
         const AreaLightData& light = scene.areaLights[i];
-        const StrataBlock cells = strata.block(kGridAreaLightBase + i, light.cellsU * light.cellsV, lightBlock);
+        const StrataBlock cells = strata.block(kGridAreaLightBase + i, light.cellsU * light.cellsV, lightBlock, rotation);
         Vec3 lightSum(0.0f);
         for (uint32_t j = 0; j < cells.size; ++j) {
             const uint32_t s = cells.stratum(j);

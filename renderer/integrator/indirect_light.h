@@ -38,7 +38,7 @@ TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, cons
         SurfacePoint sq = surfaceAt(scene, o, hit, pointAt(ray, hit.t));
         applyTextures(scene, mq, sq);
         const ShadingPoint spq = facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), w, sq);
-        const Vec3 arriving = directLight<F>(scene, spq, mq, atQ, blocks.lightAtIndirect, rng, rays) + mq.emissive;
+        const Vec3 arriving = directLight<F>(scene, spq, mq, atQ, blocks.lightAtIndirect, j, rng, rays) + mq.emissive;
         sum += m.diffuse * evalOrenNayar(view, sp.n, w) * arriving;
     }
     return sum * (settings.colorBleeding / float(directions.size));

@@ -104,7 +104,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         const float directWeight = (1.0f - a) * m.opacity;  // 0 for pure mirrors and clear glass: no shadow rays
         Vec3 local(0.0f);
         if (directWeight > 0.0f) {
-            local = directLight<F>(scene, sp, m, strata, blocks.areaLight, rng, rays);
+            local = directLight<F>(scene, sp, m, strata, blocks.areaLight, 0u, rng, rays);
             if constexpr (kIndirect) local += indirectLight<F>(scene, sp, m, strata, blocks, rng, rays);
         }
         color += r.weight * (local * directWeight + m.emissive);

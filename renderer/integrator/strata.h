@@ -61,11 +61,15 @@ struct StrataKey {
     uint32_t seed, pixelIndex, pass, node;
 
     // Block pass mod P of the grid's P blocks, in an order drawn per pixel and per grid (stratumForPass).
-    TRAZO_HD StrataBlock block(uint32_t grid, uint32_t count, uint32_t target) const {
+    // `rotation` shifts the order: the points Q of one pass's indirect directions share a key, and direction j
+    // takes the block j places on, so in one pass they take different blocks (stratified across the
+    // directions) while each still visits every block once per P passes.
+    TRAZO_HD StrataBlock block(uint32_t grid, uint32_t count, uint32_t target, uint32_t rotation = 0) const {
         const uint32_t size = blockFor(count, target);
         const uint32_t blocks = count / size;
-        const uint32_t offset = blocks == 1 ? 0u : stratumForPass(seed, pixelIndex, hashCombine(node, grid), pass, blocks);
-        return StrataBlock{offset, blocks, size};
+        if (blocks == 1) return StrataBlock{0u, 1u, size};
+        const uint32_t first = stratumForPass(seed, pixelIndex, hashCombine(node, grid), pass, blocks);
+        return StrataBlock{(first + rotation % blocks) % blocks, blocks, size};
     }
     // One stratum of a grid per pass (glossy cones).
     TRAZO_HD uint32_t stratum(uint32_t grid, uint32_t count) const { return block(grid, count, 1u).stratum(0); }

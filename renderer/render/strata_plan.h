@@ -18,8 +18,12 @@ constexpr uint32_t kMaxCyclePasses = 1u << 16;
 // stratum of every grid has been evaluated equally often.
 uint32_t fullCyclePasses(const SceneArrays& arrays, const StrataBlocks& blocks);
 
-// The blocks a headless render takes: chosen from measurement (bench/scene_bench.cpp --blocks-sweep), see
-// the definition for the rule and its numbers.
+// Passes for one cycle of the grids on the camera path only (antialiasing, area lights at camera-path points,
+// glossy cones, indirect directions): the headless render's default. At indirect hits each direction then
+// takes one block of the light, different directions different blocks.
+uint32_t cameraPathPasses(const SceneArrays& arrays, const StrataBlocks& blocks);
+
+// The blocks a headless render takes, chosen from measurement: see the definition for the rule and its numbers.
 StrataBlocks headlessBlocks(const SceneArrays& arrays);
 
 // --blocks: "1" (one stratum of every grid per pass), "whole" (every stratum: the thesis's estimator), or
