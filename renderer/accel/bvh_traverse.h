@@ -23,6 +23,9 @@ struct NodeRay {
     Vec3 origin;
     Vec3 invDirection;
     int nearSide[3];  // per axis: 0 = the min plane is entered first, 1 = the max plane; the exit is 1 − it
+#if TRAZO_BVH_SSE
+    __m128 originLanes[3], invLanes[3];  // broadcast once per ray rather than once per node
+#endif
 };
 
 TRAZO_HD NodeRay makeNodeRay(const Ray& ray) {
@@ -32,6 +35,12 @@ TRAZO_HD NodeRay makeNodeRay(const Ray& ray) {
     r.invDirection = b.invDirection;
     // The same choice as narrowSlab: the max plane first exactly when invDirection < 0 (so −0 → −inf picks it).
     for (int axis = 0; axis < 3; ++axis) r.nearSide[axis] = b.invDirection[axis] < 0.0f ? 1 : 0;
+#if TRAZO_BVH_SSE
+    for (int axis = 0; axis < 3; ++axis) {
+        r.originLanes[axis] = _mm_set1_ps(b.origin[axis]);
+        r.invLanes[axis] = _mm_set1_ps(b.invDirection[axis]);
+    }
+#endif
     return r;
 }
 
@@ -63,7 +72,7 @@ inline unsigned intersectChildrenSse(const NodeRay& r, const WideBvhNode& node, 
                                      float tEntry[kBvhWidth]) {
     __m128 t0 = _mm_set1_ps(tMin), t1 = _mm_set1_ps(tMax);
     for (int axis = 0; axis < 3; ++axis) {
-        const __m128 origin = _mm_set1_ps(r.origin[axis]), inv = _mm_set1_ps(r.invDirection[axis]);
+        const __m128 origin = r.originLanes[axis], inv = r.invLanes[axis];
         const __m128 tNear = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[axis][r.nearSide[axis]]), origin), inv);
         const __m128 tFar = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[axis][1 - r.nearSide[axis]]), origin), inv);
         t0 = _mm_max_ps(tNear, t0);

@@ -19,18 +19,34 @@ TRAZO_HD Vec3 hitPointError(const Ray& r, float t) {
     return (abs(r.origin) + abs(r.direction * t)) * kRelative;
 }
 
+// The next float above / below v (pbrt-v4's NextFloatUp/Down): a bit step, where libm's nextafterf is a
+// call on the host. ±0 step to the smallest subnormal of that direction; ±∞ and NaN stay.
+TRAZO_HD float nextFloatUp(float v) {
+    if (!(v < INFINITY)) return v;
+    if (v == 0.0f) return 1.4e-45f;
+    uint32_t bits = floatBits(v);
+    bits = v > 0.0f ? bits + 1u : bits - 1u;
+    return bitsFloat(bits);
+}
+TRAZO_HD float nextFloatDown(float v) { return -nextFloatUp(-v); }
+
 // Moves p off its surface along the geometric normal ng, to the side `towards` points at, by the
 // error bound projected on the normal (pbrt-v4's OffsetRayOrigin), then one more ulp outwards.
-TRAZO_HD Vec3 offsetRayOrigin(Vec3 p, Vec3 pError, Vec3 ng, Vec3 towards) {
-    const float d = dot(abs(ng), pError);
-    Vec3 offset = ng * d;
-    if (dot(towards, ng) < 0.0f) offset = -offset;
+// The distance along ng is offsetDistance; bumpedOrigin applies an offset and the extra ulp.
+TRAZO_HD float offsetDistance(Vec3 pError, Vec3 ng) { return dot(abs(ng), pError); }
+
+TRAZO_HD Vec3 bumpedOrigin(Vec3 p, Vec3 offset) {
     Vec3 po = p + offset;
     for (int i = 0; i < 3; ++i) {
-        if (offset[i] > 0.0f) po[i] = nextafterf(po[i], INFINITY);
-        else if (offset[i] < 0.0f) po[i] = nextafterf(po[i], -INFINITY);
+        if (offset[i] > 0.0f) po[i] = nextFloatUp(po[i]);
+        else if (offset[i] < 0.0f) po[i] = nextFloatDown(po[i]);
     }
     return po;
+}
+
+TRAZO_HD Vec3 offsetRayOrigin(Vec3 p, Vec3 pError, Vec3 ng, Vec3 towards) {
+    const Vec3 offset = ng * offsetDistance(pError, ng);
+    return bumpedOrigin(p, dot(towards, ng) < 0.0f ? -offset : offset);
 }
 
 }  // namespace trazo

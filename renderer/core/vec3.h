@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "core/hd.h"
 
@@ -33,6 +34,26 @@ TRAZO_HD float maxOf(float a, float b) {
     return fmaxf(a, b);
 #else
     return a > b ? a : b;
+#endif
+}
+
+// The bits of a float and back (host: memcpy, which compilers turn into a register move).
+TRAZO_HD uint32_t floatBits(float v) {
+#if defined(__CUDA_ARCH__)
+    return __float_as_uint(v);
+#else
+    uint32_t u;
+    std::memcpy(&u, &v, sizeof u);
+    return u;
+#endif
+}
+TRAZO_HD float bitsFloat(uint32_t u) {
+#if defined(__CUDA_ARCH__)
+    return __uint_as_float(u);
+#else
+    float v;
+    std::memcpy(&v, &u, sizeof v);
+    return v;
 #endif
 }
 

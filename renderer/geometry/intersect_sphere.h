@@ -10,8 +10,8 @@
 
 namespace trazo {
 
-// Nearest hit with tMin < t < tMax; fills hit.t and the unit outward normal. From inside the
-// sphere the hit is the exit point, whose outward normal points along the ray.
+// intersectSphere: nearest hit with tMin < t < tMax; fills hit.t and the unit outward normal. From inside
+// the sphere the hit is the exit point, whose outward normal points along the ray.
 //
 // |f + t·d|² = r² with f = o − centre: a·t² + 2b·t + c = 0 (b is half the textbook b; d need not be
 // unit, so a = d·d stays in every formula and t remains in units of ray.direction). The roots are
@@ -25,7 +25,14 @@ namespace trazo {
 //    and b² − a·c (from accurate b, c) errs by ~ε·(b² + a·|c|): each form is used where it is the
 //    better one. l comes from d × (f × d)/a, with f × d compensated, so it is accurate to ε·|l|
 //    rather than ε·|f| (RTG's subtraction) — and so is the normal, from l ∓ d·√Δ/a.
-TRAZO_HD bool intersectSphere(const SphereShape& s, const Ray& ray, float tMin, float tMax, ShapeHit& hit) {
+struct SphereRoots {
+    float tNear, tFar;  // tNear ≤ tFar
+    Vec3 l;             // the closest point of the line to the centre, relative to the centre
+    float halfChord;    // √Δ / a: the hit points are l ∓ d·halfChord
+};
+
+// The two roots of the line through the ray, or false when it misses the sphere.
+TRAZO_HD bool sphereRoots(const SphereShape& s, const Ray& ray, SphereRoots& out) {
     {
         // Cheap conservative reject first (most rays miss most spheres): the line's squared distance to
         // the centre is |f × d|²/|d|², off in plain float by a few ulps of |o| + |centre|; miss only
@@ -66,20 +73,33 @@ TRAZO_HD bool intersectSphere(const SphereShape& s, const Ray& ray, float tMin, 
         tNear = tFar;
         tFar = swap;
     }
+    out = SphereRoots{tNear, tFar, l, root / a};
+    return true;
+}
+
+TRAZO_HD bool intersectSphere(const SphereShape& s, const Ray& ray, float tMin, float tMax, ShapeHit& hit) {
+    SphereRoots r;
+    if (!sphereRoots(s, ray, r)) return false;
     // The hit point relative to the centre is l ∓ d·√Δ/a for the near/far root: small numbers only,
     // where f + t·d would carry the rounding of f and t, both ~ε·|f|.
-    const float halfChord = root / a;
-    if (tNear > tMin && tNear < tMax) {
-        hit.t = tNear;
-        hit.normal = normalize(l - d * halfChord);
+    if (r.tNear > tMin && r.tNear < tMax) {
+        hit.t = r.tNear;
+        hit.normal = normalize(r.l - ray.direction * r.halfChord);
         return true;
     }
-    if (tFar > tMin && tFar < tMax) {
-        hit.t = tFar;
-        hit.normal = normalize(l + d * halfChord);
+    if (r.tFar > tMin && r.tFar < tMax) {
+        hit.t = r.tFar;
+        hit.normal = normalize(r.l + ray.direction * r.halfChord);
         return true;
     }
     return false;
+}
+
+// Shadow rays: whether either root lies in (tMin, tMax), the same roots as intersectSphere, no normal.
+TRAZO_HD bool sphereBlocks(const SphereShape& s, const Ray& ray, float tMin, float tMax) {
+    SphereRoots r;
+    if (!sphereRoots(s, ray, r)) return false;
+    return (r.tNear > tMin && r.tNear < tMax) || (r.tFar > tMin && r.tFar < tMax);
 }
 
 }  // namespace trazo

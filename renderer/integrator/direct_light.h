@@ -9,37 +9,64 @@
 
 namespace trazo {
 
-// The material's Shade of SPEC §5 at one shading point: what depends only on the viewer is computed once,
-// and a black lobe is never evaluated (a matte surface pays no Cook–Torrance, σ = 0 no Oren–Nayar azimuth).
-struct PointBrdf {
-    Vec3 n, v;
-    Vec3 diffuse, specular;
-    float roughness;
-    OrenNayarView diffuseView;
-    bool hasDiffuse, hasSpecular;
-
-    TRAZO_HD PointBrdf(Vec3 nIn, Vec3 vIn, const MaterialData& m)
-        : n(nIn), v(vIn), diffuse(m.diffuse), specular(m.specular), roughness(m.roughness),
-          diffuseView(orenNayarView(nIn, vIn, m.roughness)), hasDiffuse(!isBlack(m.diffuse)),
-          hasSpecular(!isBlack(m.specular)) {}
-
-    TRAZO_HD bool reflects() const { return (hasDiffuse || hasSpecular) && dot(n, v) > 0.0f; }
-    // Kd·ON(N, L, V, σ) + Ks·CT(N, L, V, σ); N·L > 0 and N·V > 0 assumed.
-    TRAZO_HD Vec3 eval(Vec3 l) const {
-        Vec3 f(0.0f);
-        if (hasDiffuse) f = diffuse * evalOrenNayar(diffuseView, n, l);
-        if (hasSpecular) f += specular * evalCookTorrance(n, l, v, roughness);
-        return f;
-    }
-};
-
 // Everything a shading point needs to send shadow rays and draw its strata.
 struct ShadingPoint {
     Vec3 p;
-    Vec3 pError;
-    Vec3 ng;  // geometric normal turned towards the viewer
-    Vec3 n;   // shading normal turned towards the viewer
-    Vec3 v;   // towards the viewer
+    Vec3 ng;       // geometric normal turned towards the viewer
+    Vec3 n;        // shading normal turned towards the viewer
+    Vec3 v;        // towards the viewer
+    float offset;  // offsetDistance of p's error bound along ng
+#if !defined(__CUDA_ARCH__)
+    Vec3 above;  // host: offsetRayOrigin towards +ng, where nearly every shadow and indirect ray leaves
+#endif
+
+    TRAZO_HD ShadingPoint(Vec3 pIn, Vec3 pError, Vec3 ngIn, Vec3 nIn, Vec3 vIn)
+        : p(pIn), ng(ngIn), n(nIn), v(vIn), offset(offsetDistance(pError, ngIn)) {
+#if !defined(__CUDA_ARCH__)
+        above = bumpedOrigin(p, ng * offset);
+#endif
+    }
+    // offsetRayOrigin(p, pError, ng, towards), bit for bit. The device recomputes it: a GPU thread's
+    // registers are scarcer than its arithmetic (ptxas: caching it cost up to 12 registers a kernel).
+    TRAZO_HD Vec3 rayOrigin(Vec3 towards) const {
+        const bool below = dot(towards, ng) < 0.0f;
+#if !defined(__CUDA_ARCH__)
+        if (!below) return above;
+#endif
+        return bumpedOrigin(p, below ? -(ng * offset) : ng * offset);
+    }
+};
+
+// The material's Shade of SPEC §5 at one shading point. A black lobe is never evaluated (a matte surface
+// pays no Cook–Torrance, σ = 0 no Oren–Nayar azimuth); on the host what depends only on the viewer is
+// computed once per point (on the device per sample, for the registers, as in ShadingPoint::rayOrigin).
+struct PointBrdf {
+    const ShadingPoint& sp;
+    const MaterialData& m;
+    bool hasDiffuse, hasSpecular;
+#if !defined(__CUDA_ARCH__)
+    OrenNayarView diffuseView;
+#endif
+
+    TRAZO_HD PointBrdf(const ShadingPoint& spIn, const MaterialData& mIn)
+        : sp(spIn), m(mIn), hasDiffuse(!isBlack(mIn.diffuse)), hasSpecular(!isBlack(mIn.specular)) {
+#if !defined(__CUDA_ARCH__)
+        diffuseView = orenNayarView(sp.n, sp.v, m.roughness);
+#endif
+    }
+
+    TRAZO_HD bool reflects() const { return (hasDiffuse || hasSpecular) && dot(sp.n, sp.v) > 0.0f; }
+    // Kd·ON(N, L, V, σ) + Ks·CT(N, L, V, σ); N·L > 0 and N·V > 0 assumed.
+    TRAZO_HD Vec3 eval(Vec3 l) const {
+        Vec3 f(0.0f);
+#if !defined(__CUDA_ARCH__)
+        if (hasDiffuse) f = m.diffuse * evalOrenNayar(diffuseView, sp.n, l);
+#else
+        if (hasDiffuse) f = m.diffuse * evalOrenNayar(sp.n, l, sp.v, m.roughness);
+#endif
+        if (hasSpecular) f += m.specular * evalCookTorrance(sp.n, l, sp.v, m.roughness);
+        return f;
+    }
 };
 
 // One light sample X seen from the shading point: visible ⇒ Shade(P, L, C) = C ⊙ brdf(L). Counts the
@@ -51,7 +78,7 @@ TRAZO_HD Vec3 shadeFromPoint(const SceneView& scene, const ShadingPoint& sp, con
     if (!(dist > 0.0f)) return Vec3(0.0f);
     const Vec3 l = toLight / dist;
     if (dot(sp.n, l) <= 0.0f) return Vec3(0.0f);  // Shade would be 0: skip the shadow ray
-    const Vec3 origin = offsetRayOrigin(sp.p, sp.pError, sp.ng, l);
+    const Vec3 origin = sp.rayOrigin(l);
     ++rays;
     if (occluded(scene, Ray{origin, l}, length(x - origin))) return Vec3(0.0f);
     return color * brdf.eval(l);
@@ -65,7 +92,7 @@ TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const 
                           const StrataKey& strata, uint32_t lightBlock, uint32_t rotation, SampleStream& rng,
                           uint32_t& rays) {
     Vec3 sum(0.0f);
-    const PointBrdf brdf(sp.n, sp.v, m);
+    const PointBrdf brdf(sp, m);
     if (!brdf.reflects()) return sum;  // Shade is 0 for every light: no shadow rays
     for (uint32_t i = 0; i < scene.pointLights.count; ++i) {
         const PointLightData& light = scene.pointLights[i];

@@ -29,7 +29,7 @@ TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, cons
         const float phi = (float(k / q) + rng.next()) / float(2 * q) * 6.28318530718f;
         const Vec3 w = directionInCone(sp.n, theta, phi);
         if (dot(w, sp.ng) <= 0.0f) continue;  // below the geometric surface: contributes 0
-        const Ray ray{offsetRayOrigin(sp.p, sp.pError, sp.ng, w), w};
+        const Ray ray{sp.rayOrigin(w), w};
         ++rays;
         SurfaceHit hit;
         if (!intersectScene(scene, ray, INFINITY, hit) || hit.object == kNoObject) continue;  // sky or a light

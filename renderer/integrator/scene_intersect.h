@@ -116,6 +116,10 @@ TRAZO_HD bool occluded(const SceneView& scene, const Ray& ray, float tMax) {
                 if (meshBlocks(scene, scene.meshes[o.index], ray, tLimit)) return true;
                 continue;
             }
+            if (o.kind == ObjectKind::Sphere) {
+                if (sphereBlocks(scene.spheres[o.index], ray, 0.0f, tLimit)) return true;
+                continue;
+            }
             ShapeHit hit;
             if (intersectObject(scene, o, ray, tLimit, hit)) return true;
         }

@@ -33,7 +33,10 @@ struct StrataBlocks {
 
     static constexpr StrataBlocks ones() { return StrataBlocks{}; }
     static constexpr StrataBlocks whole() { return StrataBlocks{kWholeGrid, kWholeGrid, kWholeGrid, kWholeGrid}; }
-    constexpr bool operator==(const StrataBlocks&) const = default;
+    constexpr bool operator==(const StrataBlocks& o) const {  // kernel headers stay within C++17: no = default
+        return antialiasing == o.antialiasing && areaLight == o.areaLight && indirect == o.indirect &&
+               lightAtIndirect == o.lightAtIndirect;
+    }
 };
 
 // The largest divisor of count (≥ 1) that is at most target: a block that tiles the grid exactly. Costs at
