@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include <sys/resource.h>
+
 #include "device/flatten.h"
 #include "image/image_writer.h"
 #include "io/text_file.h"
@@ -21,6 +23,13 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The process's peak resident set so far, in MB (Linux reports ru_maxrss in KiB).
+double peakRssMegabytes() {
+    struct rusage usage {};
+    if (getrusage(RUSAGE_SELF, &usage) != 0) return 0.0;
+    return (double)usage.ru_maxrss / 1024.0;
 }
 
 }  // namespace
@@ -41,7 +50,10 @@ int runHeadlessRender(const CommandLine& options) {
     const Scene scene = readSceneFile(options.renderScene, diags);
     printDiagnostics(diags);
     if (diags.hasErrors()) return 2;
+    stats.readSeconds = secondsSince(t0);
+    const auto buildStart = std::chrono::steady_clock::now();
     const FlattenResult flat = flatten(scene);
+    stats.buildSeconds = secondsSince(buildStart);
     if (!flat.unsupported.empty()) {
         std::string list;
         for (const std::string& s : flat.unsupported) list += (list.empty() ? "" : "; ") + s;
@@ -128,6 +140,7 @@ int runHeadlessRender(const CommandLine& options) {
         return 1;
     }
 
+    stats.peakRssMb = peakRssMegabytes();
     if (!options.quiet) std::fputs(formatStatsSummary(stats).c_str(), stderr);
     if (!options.statsPath.empty()) {
         std::string error;

@@ -33,9 +33,9 @@ std::string number(double v) {
 std::string formatStatsSummary(const RenderStats& s) {
     char buf[768];
     std::snprintf(buf, sizeof buf,
-                  "scene creation %.4f s, upload %.4f s, render %.4f s\n"
+                  "scene creation %.4f s (read %.4f s, build %.4f s), upload %.4f s, render %.4f s, peak memory %.0f MB\n"
                   "%u x %u, %u passes (full cycle %u; blocks %s%s), %llu rays, %.2f Mrays/s on %s (%s)\n",
-                  s.parseSeconds, s.uploadSeconds, s.renderSeconds, s.width, s.height, s.spp, s.fullCycle,
+                  s.parseSeconds, s.readSeconds, s.buildSeconds, s.uploadSeconds, s.renderSeconds, s.peakRssMb, s.width, s.height, s.spp, s.fullCycle,
                   s.blocks.c_str(), s.fixedGrid ? ", the fixed grid" : "", (unsigned long long)s.rays,
                   s.mraysPerSecond(), s.backend.c_str(), s.device.c_str());
     std::string out = buf;
@@ -61,6 +61,8 @@ std::string formatStatsJson(const RenderStats& s) {
     };
     add("scene", jsonString(s.scene));
     add("parse_s", number(s.parseSeconds));
+    add("read_s", number(s.readSeconds));
+    add("build_s", number(s.buildSeconds));
     add("upload_s", number(s.uploadSeconds));
     add("render_s", number(s.renderSeconds));
     add("spp", std::to_string(s.spp));
@@ -78,7 +80,8 @@ std::string formatStatsJson(const RenderStats& s) {
     add("estimated_rel_error", number(s.estimatedRelError));
     add("estimate_balanced", s.estimateBalanced ? "true" : "false");
     add("target_error", number(s.targetError));
-    add("reached_target", s.reachedTarget ? "true" : "false", true);
+    add("reached_target", s.reachedTarget ? "true" : "false");
+    add("peak_rss_mb", number(s.peakRssMb), true);
     return j + "}\n";
 }
 

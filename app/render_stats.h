@@ -15,7 +15,10 @@ struct RenderStats {
     uint32_t fullCycle = 0;      // passes of one full cycle of the scene's strata
     uint32_t seed = 0;
     std::string features;
-    double parseSeconds = 0, uploadSeconds = 0, renderSeconds = 0;
+    double parseSeconds = 0, uploadSeconds = 0, renderSeconds = 0;  // parseSeconds: all of scene creation
+    double readSeconds = 0, buildSeconds = 0;  // scene creation's two parts: reading files (scene, OBJ, CSG,
+                                               // textures), then building (flatten: meshes, BVHs)
+    double peakRssMb = 0;                      // the process's peak resident set (getrusage), at the end
     uint64_t rays = 0;
     bool fixedGrid = false;             // --fixed-grid
     std::string blocks;                 // describeBlocks of the strata a pass took
