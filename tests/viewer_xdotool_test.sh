@@ -46,7 +46,7 @@ press_p_for_shot() {  # presses P until screenshot number $1 exists (a key lost 
 
 cd "$work"
 # 160x120 renders fast; the window opens at 640x480 (the image scaled) with the panel on its left third.
-"$trazo" "$scenes/scene1_area.scene" --backend cpu --width 160 --height 120 >"$work/viewer.log" 2>&1 &
+"$trazo" "$scenes/scene1_area.scene" --backend cpu --width 160 --height 120 --blocks 1 >"$work/viewer.log" 2>&1 &
 pid=$!
 wid=$(timeout 30 xdotool search --sync --onlyvisible --name '^trazo' | head -n 1)
 [ -n "$wid" ] || fail "the viewer window did not appear within 30 s"

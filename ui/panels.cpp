@@ -167,10 +167,10 @@ void drawRenderPanel(PanelState& state, const RenderInfo& info, PanelActions& ac
     }
     ImGui::Text("Display: %s", info.displayPath.c_str());
     ImGui::Text("Image %u x %u, full cycle %u passes", info.width, info.height, info.cyclePasses);
-    ImGui::Text("Passes: %u", info.passes);
+    ImGui::Text("Passes: %u, worth %.0f of one stratum (blocks %s)", info.passes, info.samples, info.blocks.c_str());
     if (state.targetPasses > 0) {
         ImGui::SameLine();
-        ImGui::Text("(%u to go)", state.targetPasses > int(info.passes) ? state.targetPasses - info.passes : 0u);
+        ImGui::Text("(%.0f to go)", std::max(0.0, state.targetPasses - info.samples));
     }
     ImGui::Text("%.3g samples/s  %.3g Mrays/s  %.1f s", info.samplesPerSecond, info.mraysPerSecond, info.elapsedSeconds);
     ImGui::InputInt("Stop after", &state.targetPasses, 1, int(std::max(info.cyclePasses, 1u)));

@@ -18,6 +18,8 @@ struct RenderInfo {
     bool cudaBuilt = false;
     uint32_t width = 0, height = 0;
     uint32_t passes = 0, cyclePasses = 1;
+    double samples = 0;  // passes weighted by their blocks (ViewerSession::samples)
+    std::string blocks;  // the current segment's (describeBlocks)
     double elapsedSeconds = 0, samplesPerSecond = 0, mraysPerSecond = 0;
     std::vector<std::string> unsupported;
 };
@@ -27,7 +29,7 @@ struct PanelState {
     int pointLight = 0, areaLight = 0;
     ToneSettings tone;
     int backend = 0;           // 0 cpu, 1 cuda (the Render panel's choice)
-    int targetPasses = 0;      // stop after this many passes; 0 = keep going
+    int targetPasses = 0;      // stop after this many one-stratum passes' worth of samples; 0 = keep going
     bool sizeFollowsWindow = false;
     char screenshotPath[1024] = {};
     char scenePath[1024] = {};

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include "image/image_writer.h"
 #include "panels.h"
 #include "render/progressive_render.h"
+#include "render/strata_plan.h"
 #include "scene/scene_reader.h"
 #include "scene/scene_writer.h"
 #include "viewer_session.h"
@@ -93,6 +95,10 @@ public:
                    options.screenshot.empty() ? autoName_ : options.screenshot);
         copyString(state_.scenePath, sizeof state_.scenePath, editedScenePath(options.scenePath));
         session_.setOnBatchDone(&Window::wake);
+        // Larger blocks while a pass still fits the batch budget, unless --blocks fixes them; --frames keeps one
+        // stratum per pass, so its image is `--render --blocks 1 --spp N`.
+        if (options.blocks) session_.setBlocks(*options.blocks, 0.0);
+        else if (!options.frames) session_.setBlocks(StrataBlocks::ones(), kBatchSeconds);
     }
 
     int run(Display& display) {
@@ -100,7 +106,7 @@ public:
         auto lastFrame = Clock::now();
         while (!window_.shouldClose()) {
             const bool running = session_.busy();
-            const bool finished = state_.targetPasses > 0 && session_.passes() >= uint32_t(state_.targetPasses) &&
+            const bool finished = state_.targetPasses > 0 && session_.samples() >= double(state_.targetPasses) &&
                                   session_.dirty() == kDirtyNone && !screenshotPending_;
             // Woken early by input or by the batch's end (Window::wake); ImGui gets a few frames to settle.
             if (running || (finished && session_.generation() == shownGeneration_)) {
@@ -134,8 +140,10 @@ public:
                 if (!options_.frames) choosePreview();
                 const uint32_t target = state_.targetPasses > 0 ? uint32_t(state_.targetPasses) : kMaxProgressivePasses;
                 if (session_.dirty() != kDirtyNone) session_.applyEdits();
-                if (session_.passes() < target) {
-                    session_.startPasses(std::min(session_.passesForBudget(kBatchSeconds), target - session_.passes()));
+                if (session_.samples() < double(target)) {
+                    // The target counts one-stratum passes; a pass of a grown segment stands for several.
+                    const double left = (double(target) - session_.samples()) / session_.blocksWeight();
+                    session_.startPasses(uint32_t(std::clamp(std::ceil(left), 1.0, double(session_.passesForBudget(kBatchSeconds)))));
                     ++batches_;
                 }
             }
@@ -243,9 +251,11 @@ private:
         if (session_.previewDivisor() > 1) info.displayPath += ", preview at 1/" + std::to_string(session_.previewDivisor());
         info.passes = session_.passes();
         info.cyclePasses = session_.cyclePasses();
+        info.samples = session_.samples();
+        info.blocks = describeBlocks(session_.blocks());
         info.elapsedSeconds = session_.renderSeconds();
         if (info.elapsedSeconds > 0) {
-            info.samplesPerSecond = double(info.passes) * info.width * info.height / info.elapsedSeconds;
+            info.samplesPerSecond = info.samples * info.width * info.height / info.elapsedSeconds;
             info.mraysPerSecond = double(session_.rays()) / info.elapsedSeconds * 1e-6;
         }
         info.unsupported = session_.unsupported();

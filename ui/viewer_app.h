@@ -7,6 +7,7 @@
 #include <string>
 
 #include "backends/backend.h"
+#include "integrator/strata.h"
 
 namespace trazo {
 
@@ -19,6 +20,7 @@ struct ViewerOptions {
     std::optional<uint32_t> frames;  // automation: run this many passes, save `screenshot` (if any), exit
     std::string screenshot;          // --screenshot: the automation's output, else the screenshot key's default
     bool quiet = false;              // no start and exit lines
+    std::optional<StrataBlocks> blocks;  // --blocks: fixed blocks; none: one stratum per pass, growing
 };
 
 // Exit status: 0 (closed, or automation done), 1 (no display or GL, backend or file failure), 2 (bad scene).

@@ -52,12 +52,43 @@ bool ViewerSession::busy() {
     worker_.join();
     const double seconds = batch_.get();  // rethrows the batch's exception
     passes_ += batchPasses_;
+    segmentPasses_ += batchPasses_;
+    samples_ += double(batchPasses_) * frame_.sampleWeight;
     renderSeconds_ += seconds;
     secondsPerPass_ = seconds / std::max(batchPasses_, 1u);
     secondsPerPixelPass_ = secondsPerPass_ / (double(width_) * height_);
     rays_ = backend_->raysTraced();
     ++generation_;
+    growBlocks();
     return false;
+}
+
+void ViewerSession::setBlocks(const StrataBlocks& first, double growthPassSeconds) {
+    waitIdle();
+    firstBlocks_ = first;
+    growthPassSeconds_ = growthPassSeconds;
+    clearAccumulation();
+}
+
+void ViewerSession::startSegment(const StrataBlocks& blocks) {
+    const uint32_t seed = segment_ == 0 ? seed_ : hashCombine(seed_, segment_);
+    frame_ = makeFrameParams(scene_, width_, height_, seed, blocks);
+    segmentCycle_ = fullCyclePasses(flat_.arrays, blocks);
+    frame_.sampleWeight = float(cyclePasses_) / float(segmentCycle_);
+    segmentPasses_ = 0;
+}
+
+void ViewerSession::growBlocks() {
+    if (growthPassSeconds_ <= 0.0 || segmentPasses_ % segmentCycle_ != 0) return;
+    if (2.0 * secondsPerPass_ > growthPassSeconds_) return;
+    const StrataBlocks limit = headlessBlocks(flat_.arrays), b = frame_.blocks;
+    auto doubled = [](uint32_t t, uint32_t max) { return t >= max / 2 ? max : 2 * t; };
+    const StrataBlocks grown{doubled(b.antialiasing, limit.antialiasing), doubled(b.areaLight, limit.areaLight),
+                             doubled(b.indirect, limit.indirect), doubled(b.lightAtIndirect, limit.lightAtIndirect)};
+    if (grown == b) return;
+    ++segment_;
+    startSegment(grown);
+    secondsPerPixelPass_ *= 2.0;  // until measured: batches sized for the larger passes
 }
 
 void ViewerSession::waitIdle() {
@@ -74,7 +105,6 @@ void ViewerSession::applyEdits() {
         height_ = std::max((requestedHeight_ + previewDivisor_ - 1) / previewDivisor_, 1u);
         backend_->resize(width_, height_);  // reallocates, and clears
     }
-    frame_ = makeFrameParams(scene_, width_, height_, seed_);
     clearAccumulation();
     dirty_ = kDirtyNone;
 }
@@ -87,7 +117,10 @@ void ViewerSession::uploadScene() {
 
 void ViewerSession::clearAccumulation() {
     backend_->reset();
+    segment_ = 0;
+    startSegment(firstBlocks_);
     passes_ = 0;
+    samples_ = 0.0;
     rays_ = 0;
     renderSeconds_ = 0.0;
     ++generation_;
@@ -96,12 +129,14 @@ void ViewerSession::clearAccumulation() {
 void ViewerSession::startPasses(uint32_t count) {
     applyEdits();
     count = std::min(count, kMaxProgressivePasses - passes_);
+    // With growth on, batches end at the segment's cycle boundaries, where growBlocks may start a new one.
+    if (growthPassSeconds_ > 0.0) count = std::min(count, segmentCycle_ - segmentPasses_ % segmentCycle_);
     if (count == 0) return;
     batchPasses_ = count;
     std::promise<double> promise;
     batch_ = promise.get_future();
     // The worker sees only the backend and copies of what the passes need; the UI thread keeps the scene.
-    worker_ = std::thread([backend = backend_.get(), frame = frame_, first = passes_, count, cycle = cyclePasses_,
+    worker_ = std::thread([backend = backend_.get(), frame = frame_, first = segmentPasses_, count, cycle = segmentCycle_,
                            done = onBatchDone_, promise = std::move(promise)]() mutable {
         const auto t0 = std::chrono::steady_clock::now();
         try {

@@ -2,6 +2,12 @@
 // accumulation. Edits mark what changed; applyEdits() re-flattens and re-uploads (or only resets, for the
 // camera) and restarts the accumulation. Passes run in batches on a worker thread, so the window stays
 // responsive while the backend works. No window and no GL: the tests drive it directly.
+//
+// Blocks of strata (integrator/strata.h) start at one stratum per pass, so the first image after an edit is as
+// fast as a pass can be. With growth on, whenever a cycle of the current blocks is complete and a pass at
+// twice the blocks would still fit the pass budget, the accumulation goes on in a new segment: blocks
+// doubled (up to the headless render's), a seed of its own, and samples weighted by the one-stratum passes
+// each stands for (FrameParams::sampleWeight). Every segment is whole cycles, an exact stratified estimate.
 #pragma once
 
 #include <functional>
@@ -57,6 +63,11 @@ public:
     uint32_t passesForBudget(double seconds) const;
     // Measured cost of one pass per pixel (0 before the first batch): predicts a pass at another size.
     double secondsPerPixelPass() const { return secondsPerPixelPass_; }
+    // The blocks every restart begins with (default: one stratum per pass), and growth while a pass at twice
+    // the blocks takes at most `growthPassSeconds` (0, the default: never; the image then equals
+    // `trazo --render --blocks B --spp N`). Restarts the accumulation.
+    void setBlocks(const StrataBlocks& first, double growthPassSeconds);
+    const StrataBlocks& blocks() const { return frame_.blocks; }
     // Called on the worker thread when a batch ends (the window wakes its event loop with it).
     void setOnBatchDone(std::function<void()> callback) { onBatchDone_ = std::move(callback); }
 
@@ -65,6 +76,9 @@ public:
     uint32_t width() const { return width_; }  // the accumulation's size (smaller during a preview)
     uint32_t height() const { return height_; }
     uint32_t passes() const { return passes_; }  // since the last reset
+    // Passes weighted by their samples' weights: passes of one stratum per grid they are worth.
+    double samples() const { return samples_; }
+    double blocksWeight() const { return frame_.sampleWeight; }  // samples a pass of the current segment adds
     uint32_t cyclePasses() const { return cyclePasses_; }
     uint64_t rays() const { return rays_; }
     double renderSeconds() const { return renderSeconds_; }  // batch time since the last reset
@@ -76,6 +90,8 @@ public:
 private:
     void uploadScene();
     void clearAccumulation();
+    void startSegment(const StrataBlocks& blocks);  // frame_ for a new segment from the current pass on
+    void growBlocks();                              // at the end of a batch: a larger segment when it pays
 
     Scene scene_, fileScene_;
     std::unique_ptr<Backend> backend_;
@@ -83,7 +99,12 @@ private:
     uint32_t width_ = 0, height_ = 0, requestedWidth_ = 0, requestedHeight_ = 0, previewDivisor_ = 1;
     FlattenResult flat_;
     FrameParams frame_{};
-    uint32_t cyclePasses_ = 1;
+    uint32_t cyclePasses_ = 1;      // of one stratum per pass
+    uint32_t segment_ = 0;          // segments since the last reset
+    uint32_t segmentPasses_ = 0;    // passes of the current segment
+    uint32_t segmentCycle_ = 1;     // fullCyclePasses of its blocks
+    StrataBlocks firstBlocks_{};    // setBlocks
+    double growthPassSeconds_ = 0;
     DirtyFlags dirty_ = kDirtyNone;
 
     std::thread worker_;
@@ -92,6 +113,7 @@ private:
     std::function<void()> onBatchDone_;
 
     uint32_t passes_ = 0;
+    double samples_ = 0.0;
     uint64_t rays_ = 0;
     double renderSeconds_ = 0.0;
     double secondsPerPass_ = 0.0;  // of the last batch, for the budget

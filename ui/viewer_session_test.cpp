@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
+#include "render/strata_plan.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"
 
@@ -180,6 +182,44 @@ TEST(ViewerSessionTest, BatchedPassesEqualTheHeadlessRender) {
     const std::vector<Vec3> reference = readImage(*headless);
     ASSERT_EQ(viewer.size(), reference.size());
     EXPECT_EQ(std::memcmp(viewer.data(), reference.data(), viewer.size() * sizeof(Vec3)), 0);
+}
+
+// With growth on, blocks double at cycle boundaries up to the headless render's, each segment's samples
+// weighted by the one-stratum passes they stand for; the image stays an unbiased estimate: its mean
+// difference from a converged reference (another seed) is within 4 standard errors of 0.
+TEST(ViewerSessionTest, BlocksGrowAtCycleBoundariesAndKeepTheEstimate) {
+    const Scene scene = readScene("scenes/scene1_area.scene");
+    ViewerSession session(scene, createCpuBackend(2), 3, 24, 16);
+    session.setBlocks(StrataBlocks::ones(), 1e9);  // any pass fits
+    const StrataBlocks target = headlessBlocks(flatten(scene).arrays);
+    double weightBefore = 0;
+    for (int batch = 0; batch < 20 && !(session.blocks() == target); ++batch) {
+        EXPECT_GT(session.blocksWeight(), weightBefore);
+        weightBefore = session.blocksWeight();
+        session.renderPasses(1000);  // stops at the segment's cycle end
+    }
+    ASSERT_EQ(session.blocks(), target) << describeBlocks(session.blocks());
+    session.renderPasses(1000);  // one whole-light pass: a cycle of the last segment
+    // Every segment is whole cycles, each worth one cycle of one stratum per pass (100 passes' worth).
+    EXPECT_EQ(std::fmod(session.samples(), 100.0), 0.0) << session.samples();
+    // Light blocks 1, 2, 4, 5, 10, 25, 50, 100 (targets doubling, divisors of 100): one cycle each.
+    EXPECT_EQ(session.passes(), 100u + 50 + 25 + 20 + 10 + 4 + 2 + 1);
+    EXPECT_EQ(session.samples(), 800.0);
+    const std::vector<Vec3> image = session.image();
+
+    std::unique_ptr<Backend> headless = createCpuBackend(2);
+    const FlattenResult flat = flatten(scene);
+    headless->upload(flat.arrays);
+    headless->resize(24, 16);
+    RenderLimits limits;
+    limits.passes = 16;
+    renderProgressive(*headless, makeFrameParams(scene, 24, 16, 99, StrataBlocks::whole()), limits);
+    const std::vector<Vec3> reference = readImage(*headless);
+    double mean = 0, sq = 0;
+    for (size_t i = 0; i < image.size(); ++i) mean += (image[i].x - reference[i].x) / image.size();
+    for (size_t i = 0; i < image.size(); ++i) sq += std::pow(image[i].x - reference[i].x - mean, 2);
+    const double se = std::sqrt(sq / (image.size() - 1) / image.size());
+    EXPECT_LT(std::abs(mean), 4 * se + 1e-7) << "mean " << mean << " se " << se;
 }
 
 // An edit changes the image; undoing it and restarting gives the first image back bit for bit.

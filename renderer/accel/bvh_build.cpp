@@ -1,4 +1,5 @@
-// Binned-SAH BVH builder (host). The top of the tree is split with binning spread over threads; the
+// Binned-SAH BVH builder (host). The top of the tree is split level by level, a level's nodes on several
+// threads (or, while a level has fewer nodes than threads, each node's binning spread over them); the
 // subtrees below a fixed size become tasks built on a thread pool into their own arrays, concatenated at
 // the end in task order, so the layout does not depend on the thread count.
 #include "accel/bvh_build.h"
@@ -6,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cassert>
+#include <functional>
 #include <thread>
 
 #if defined(__SSE2__)
@@ -141,18 +143,68 @@ public:
         taskThreshold_ = std::max<uint32_t>(4096, (uint32_t)(refs.size() / 64));
     }
 
-    void buildTop(std::vector<BvhNode>& out, uint32_t nodeIndex, const Range& r, std::vector<Range>& tasks,
-                  std::vector<uint32_t>& taskSlots) {
-        if (r.count() <= taskThreshold_) {
-            tasks.push_back(r);
-            taskSlots.push_back(nodeIndex);
-            return;
-        }
+    // Splits one node of the top of the tree: its split and partition, without touching the node arrays
+    // (several nodes of one level are split at once, on different threads).
+    struct TopSplit {
+        bool leaf = true;
         Range left, right;
-        if (!splitNode(out, nodeIndex, r, true, left, right)) return;
-        const uint32_t child = out[nodeIndex].firstOrChild;
-        buildTop(out, child, left, tasks, taskSlots);
-        buildTop(out, child + 1, right, tasks, taskSlots);
+    };
+    TopSplit splitTop(const Range& r, bool parallelBinning) {
+        TopSplit out;
+        const Split split = chooseSplit(r, parallelBinning);
+        if (split.kind == SplitKind::Leaf) return out;
+        out.leaf = false;
+        if (split.kind == SplitKind::Sah) partitionSah(r, split, out.left, out.right);
+        else partitionMedian(r, out.left, out.right);
+        return out;
+    }
+
+    // The top of the tree, one level at a time: a level's nodes above the task size are split in
+    // parallel (one node per thread, or one node's binning over all threads when the level has fewer
+    // nodes than threads); their children are numbered in level order, so the layout does not depend on
+    // the thread count. Nodes at or below the task size become tasks, in the order they are met.
+    void buildTop(std::vector<BvhNode>& out, const Range& root, std::vector<Range>& tasks,
+                  std::vector<uint32_t>& taskSlots) {
+        std::vector<std::pair<Range, uint32_t>> level{{root, 0u}}, big, next;  // (range, node index)
+        std::vector<TopSplit> splits;
+        while (!level.empty()) {
+            big.clear();
+            for (const auto& [r, slot] : level) {
+                if (r.count() <= taskThreshold_) {
+                    tasks.push_back(r);
+                    taskSlots.push_back(slot);
+                } else {
+                    big.push_back({r, slot});
+                }
+            }
+            splits.assign(big.size(), TopSplit{});
+            if (big.size() < threads_) {
+                for (size_t i = 0; i < big.size(); ++i) splits[i] = splitTop(big[i].first, true);
+            } else {
+                std::atomic<size_t> nextIndex{0};
+                auto work = [&] {
+                    for (size_t i; (i = nextIndex.fetch_add(1)) < big.size();) splits[i] = splitTop(big[i].first, false);
+                };
+                std::vector<std::thread> pool;
+                for (unsigned t = 1; t < threads_; ++t) pool.emplace_back(work);
+                work();
+                for (std::thread& t : pool) t.join();
+            }
+            next.clear();
+            for (size_t i = 0; i < big.size(); ++i) {
+                const Range& r = big[i].first;
+                if (splits[i].leaf) {
+                    out[big[i].second] = BvhNode{r.bounds.min, r.begin, r.bounds.max, r.count()};
+                    continue;
+                }
+                const uint32_t child = (uint32_t)out.size();
+                out.resize(out.size() + 2);
+                out[big[i].second] = BvhNode{r.bounds.min, child, r.bounds.max, 0};
+                next.push_back({splits[i].left, child});
+                next.push_back({splits[i].right, child + 1});
+            }
+            level.swap(next);
+        }
     }
 
     void buildSubtree(std::vector<BvhNode>& out, uint32_t nodeIndex, const Range& r) {
@@ -337,31 +389,53 @@ private:
 
 }  // namespace
 
-Bvh buildBvh(const std::vector<Aabb>& primitiveBounds, const BvhBuildOptions& optionsIn) {
+Bvh buildBvh(const std::vector<Aabb>& primitiveBounds, const BvhBuildOptions& options) {
+    return buildBvh((uint32_t)primitiveBounds.size(), [&](uint32_t i) { return primitiveBounds[i]; }, options);
+}
+
+Bvh buildBvh(uint32_t n, const std::function<Aabb(uint32_t)>& boundsOf, const BvhBuildOptions& optionsIn) {
     Bvh bvh;
-    const uint32_t n = (uint32_t)primitiveBounds.size();
     if (n == 0) return bvh;
     BvhBuildOptions options = optionsIn;
     options.maxLeafSize = std::max(1u, options.maxLeafSize);
     options.binCount = std::clamp(options.binCount, 2u, kMaxBvhBins);
     const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
 
+    // The references, in chunks over the threads; the root's boxes are merged from the chunks' (exact:
+    // min and max).
     std::vector<PrimRef> refs(n);
     Range root;
     root.end = n;
-    for (uint32_t i = 0; i < n; ++i) {
-        const Aabb& b = primitiveBounds[i];
-        refs[i] = PrimRef{b.min, i, b.max, 0};
-        growBox(root.bounds, b.min, b.max);
-        const Vec3 c = centroidOf(refs[i]);
-        growBox(root.centroids, c, c);
+    {
+        const unsigned parts = n >= 65536 ? threads : 1;
+        std::vector<Range> partial(parts);
+        auto fill = [&](unsigned p) {
+            const uint32_t chunk = (n + parts - 1) / parts;
+            const uint32_t b = std::min(n, p * chunk), e = std::min(n, (p + 1) * chunk);
+            Range& part = partial[p];
+            for (uint32_t i = b; i < e; ++i) {
+                const Aabb box = boundsOf(i);
+                refs[i] = PrimRef{box.min, i, box.max, 0};
+                growBox(part.bounds, box.min, box.max);
+                const Vec3 c = centroidOf(refs[i]);
+                growBox(part.centroids, c, c);
+            }
+        };
+        std::vector<std::thread> pool;
+        for (unsigned p = 1; p < parts; ++p) pool.emplace_back(fill, p);
+        fill(0);
+        for (std::thread& t : pool) t.join();
+        for (const Range& part : partial) {
+            growBox(root.bounds, part.bounds);
+            growBox(root.centroids, part.centroids);
+        }
     }
 
     Builder builder(refs, options, threads);
     std::vector<BvhNode> top(1);
     std::vector<Range> tasks;
     std::vector<uint32_t> taskSlots;
-    builder.buildTop(top, 0, root, tasks, taskSlots);
+    builder.buildTop(top, root, tasks, taskSlots);
 
     // Largest tasks first so the last ones to finish are small.
     std::vector<uint32_t> schedule(tasks.size());
@@ -394,10 +468,12 @@ Bvh buildBvh(const std::vector<Aabb>& primitiveBounds, const BvhBuildOptions& op
             if (node.primCount == 0) node.firstOrChild += base - 1;
             return node;
         };
-        const std::vector<BvhNode>& s = subtrees[t];
+        std::vector<BvhNode>& s = subtrees[t];
         bvh.nodes[taskSlots[t]] = relocate(s[0]);
         for (size_t k = 1; k < s.size(); ++k) bvh.nodes.push_back(relocate(s[k]));
+        std::vector<BvhNode>().swap(s);  // freed as it is copied: the peak holds one copy of the nodes
     }
+    std::vector<std::vector<BvhNode>>().swap(subtrees);
 
     bvh.primitiveOrder.resize(n);
     for (uint32_t i = 0; i < n; ++i) bvh.primitiveOrder[i] = refs[i].id;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "accel/aabb.h"
@@ -39,6 +40,10 @@ struct Bvh {
 // SAH split exists (all centroids equal), the node is split at the median instead. Deterministic: the
 // same input and options give the same nodes whatever the thread count.
 Bvh buildBvh(const std::vector<Aabb>& primitiveBounds, const BvhBuildOptions& options = {});
+
+// The same over `count` primitives whose bounds boundsOf(i) gives (called once per primitive, from
+// several threads at once: it must be safe to call concurrently), without an array of boxes.
+Bvh buildBvh(uint32_t count, const std::function<Aabb(uint32_t)>& boundsOf, const BvhBuildOptions& options = {});
 
 // The SAH cost of a built tree relative to its root's area (the figure the builder minimises greedily).
 float bvhSahCost(const Bvh& bvh, const BvhBuildOptions& options = {});

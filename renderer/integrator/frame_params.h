@@ -14,6 +14,10 @@ struct FrameParams {
     uint32_t seed = 0;
     // The strata of each grid a pass evaluates (strata.h); StrataBlocks::whole() is the thesis's estimator.
     StrataBlocks blocks{};
+    // What a sample of this render counts for in the accumulation (AccumPixel::add). Passes of one render all
+    // weigh the same; the viewer, whose blocks grow between segments, weighs a segment's samples by the
+    // one-stratum passes each stands for, so later, larger blocks are not outvoted by early small ones.
+    float sampleWeight = 1.0f;
     // Passes alternate between the accumulation's two halves in blocks of this many (0: no second half);
     // progressive_render.h chooses it so both halves are equally stratified.
     uint32_t halfBlock = 0;
@@ -29,20 +33,22 @@ struct FrameParams {
     }
 };
 
-// Accumulation per pixel: float RGB sums and the number of samples added. `sum`/`count` hold every sample
-// (the image is sum / count); `sumB`/`countB` hold the samples of second-half passes only, so the first half
+// Accumulation per pixel: float RGB sums of weighted samples and the sum of their weights (FrameParams::
+// sampleWeight; 1 for every sample of a headless render, so `count` is then the sample count). `sum`/`count`
+// hold every sample (the image is sum / count); `sumB`/`countB` hold the samples of second-half passes only, so the first half
 // is (sum - sumB, count - countB). Two half estimates of the same pixel give its error (error_estimate.h).
 struct AccumPixel {
     Vec3 sum;
     float count;
     Vec3 sumB;
     float countB;
-    TRAZO_HD void add(Vec3 sample, bool secondHalf) {
-        sum += sample;
-        count += 1.0f;
+    TRAZO_HD void add(Vec3 sample, bool secondHalf, float weight) {
+        const Vec3 weighted = sample * weight;  // exact for weight 1
+        sum += weighted;
+        count += weight;
         if (secondHalf) {
-            sumB += sample;
-            countB += 1.0f;
+            sumB += weighted;
+            countB += weight;
         }
     }
 };

@@ -39,8 +39,8 @@ TEST(ErrorEstimate, UnavailableWithOneHalfEmpty) {
 
 TEST(ErrorEstimate, AddSplitsIntoTheSecondHalf) {
     AccumPixel p{};
-    p.add(Vec3(1.0f), false);
-    p.add(Vec3(2.0f), true);
+    p.add(Vec3(1.0f), false, 1.0f);
+    p.add(Vec3(2.0f), true, 1.0f);
     EXPECT_EQ(p.count, 2.0f);
     EXPECT_EQ(p.sum.x, 3.0f);
     EXPECT_EQ(p.countB, 1.0f);
@@ -92,7 +92,7 @@ public:
                 SampleStream rng(3, i, pass);
                 const float u = (s + rng.next()) / strata_;
                 const float noise = noise_ * (rng.next() + rng.next() + rng.next() - 1.5f) * 2.0f;
-                accum_[i].add(Vec3(value(i, u) + noise), frame.inSecondHalf(pass));
+                accum_[i].add(Vec3(value(i, u) + noise), frame.inSecondHalf(pass), 1.0f);
             }
         }
         ++calls;

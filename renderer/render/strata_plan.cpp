@@ -59,7 +59,18 @@ StrataBlocks headlessBlocks(const SceneArrays& a) {
     for (const AreaLightData& l : a.areaLights) b.areaLight = std::max(b.areaLight, completingIn((uint64_t)l.cellsU * l.cellsV));
     b.indirect = kWholeGrid;
     b.lightAtIndirect = 1;
-    return b;
+    return clampToScene(a, b);
+}
+
+StrataBlocks clampToScene(const SceneArrays& a, const StrataBlocks& b) {
+    const uint64_t k = antialiasingSide(a.settings.antialiasing);
+    const bool indirect = (a.features & kFeatureIndirect) && a.settings.indirectQuality > 0;
+    uint64_t cells = 1;
+    for (const AreaLightData& l : a.areaLights) cells = std::max<uint64_t>(cells, (uint64_t)l.cellsU * l.cellsV);
+    const uint64_t qi = a.settings.indirectQuality;
+    auto clamp = [](uint32_t target, uint64_t largest) { return (uint32_t)std::min<uint64_t>(target, largest); };
+    return StrataBlocks{clamp(b.antialiasing, k * k), clamp(b.areaLight, a.areaLights.empty() ? 1 : cells),
+                        clamp(b.indirect, indirect ? 2 * qi * qi : 1), clamp(b.lightAtIndirect, indirect ? cells : 1)};
 }
 
 namespace {

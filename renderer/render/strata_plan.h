@@ -26,6 +26,10 @@ uint32_t cameraPathPasses(const SceneArrays& arrays, const StrataBlocks& blocks)
 // The blocks a headless render takes, chosen from measurement: see the definition for the rule and its numbers.
 StrataBlocks headlessBlocks(const SceneArrays& arrays);
 
+// Each target at most the largest grid of its kind in the scene (1 for a kind it lacks): the same blocks,
+// and no growth past what changes anything.
+StrataBlocks clampToScene(const SceneArrays& arrays, const StrataBlocks& blocks);
+
 // --blocks: "1" (one stratum of every grid per pass), "whole" (every stratum: the thesis's estimator), or
 // four targets "AA,LIGHT,INDIRECT,LIGHT_AT_INDIRECT" (positive integers or "whole"). False with the reason.
 bool parseStrataBlocks(const std::string& text, StrataBlocks& out, std::string& why);

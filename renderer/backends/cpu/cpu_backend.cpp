@@ -30,7 +30,7 @@ uint64_t renderTilePasses(const SceneView& scene, const FrameParams& frame, Tile
             for (uint32_t x = tile.x0; x < tile.x1; ++x) {
                 uint32_t sampleRays = 0;
                 const Vec3 c = renderSample<F>(scene, frame, x, y, pass, sampleRays);
-                accum[(size_t)y * frame.camera.width + x].add(c, frame.inSecondHalf(pass));
+                accum[(size_t)y * frame.camera.width + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
                 rays += sampleRays;
             }
         }

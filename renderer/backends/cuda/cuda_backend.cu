@@ -37,7 +37,7 @@ __global__ void renderPassKernel(SceneView scene, FrameParams frame, uint32_t pa
     uint32_t rays = 0;
     if (x < frame.camera.width && y < frame.camera.height) {
         const Vec3 c = renderSample<F>(scene, frame, x, y, pass, rays);
-        accum[(size_t)y * frame.camera.width + x].add(c, frame.inSecondHalf(pass));
+        accum[(size_t)y * frame.camera.width + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
     }
     // One atomic per warp for the ray count.
     for (int offset = 16; offset > 0; offset /= 2) rays += __shfl_down_sync(0xffffffffu, rays, offset);
