@@ -95,8 +95,10 @@ void binPrimitives(const PrimRef* refs, uint32_t count, const BinMapping& m, Bin
     const __m128 origin = _mm_setr_ps(m.origin.x, m.origin.y, m.origin.z, 0.0f);
     const __m128 scale = _mm_setr_ps(m.scale.x, m.scale.y, m.scale.z, 0.0f);
     const __m128 half = _mm_set1_ps(0.5f), zero = _mm_setzero_ps(), last = _mm_set1_ps((float)(m.binCount - 1));
+    const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));  // the id lane would be a denormal
     for (uint32_t i = 0; i < count; ++i) {
-        const __m128 bMin = _mm_loadu_ps(&refs[i].min.x), bMax = _mm_loadu_ps(&refs[i].max.x);
+        const __m128 bMin = _mm_and_ps(_mm_loadu_ps(&refs[i].min.x), xyz);
+        const __m128 bMax = _mm_and_ps(_mm_loadu_ps(&refs[i].max.x), xyz);
         const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_mul_ps(_mm_add_ps(bMin, bMax), half), origin), scale);
         alignas(16) int32_t bin[4];
         _mm_store_si128((__m128i*)bin, _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(f, zero), last)));
@@ -335,6 +337,59 @@ private:
         const BinMapping m = mappingFor(r);
         PrimRef* p = refs_.data();
         uint32_t i = r.begin, j = r.end;
+#if defined(__SSE2__)
+        // binOf's arithmetic in four lanes, as binPrimitives does it, and the boxes grown by minps/maxps
+        // (which are fastMin/fastMax: "a < b ? a : b"), so the result is the scalar loop's bit for bit.
+        const __m128 origin = _mm_setr_ps(m.origin.x, m.origin.y, m.origin.z, 0.0f);
+        const __m128 scale = _mm_setr_ps(m.scale.x, m.scale.y, m.scale.z, 0.0f);
+        const __m128 half = _mm_set1_ps(0.5f), zero = _mm_setzero_ps(), last = _mm_set1_ps((float)(m.binCount - 1));
+        const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));
+        const __m128 inf = _mm_set1_ps(INFINITY), negInf = _mm_set1_ps(-INFINITY);
+        __m128 lbMin = inf, lbMax = negInf, lcMin = inf, lcMax = negInf;
+        __m128 rbMin = inf, rbMax = negInf, rcMin = inf, rcMax = negInf;
+        const int axis = s.axis, splitBin = s.bin;
+        struct Lanes {
+            __m128 lo, hi, c;
+            bool left;
+        };
+        auto look = [&](const PrimRef& ref) {
+            Lanes l;
+            l.lo = _mm_and_ps(_mm_loadu_ps(&ref.min.x), xyz);
+            l.hi = _mm_and_ps(_mm_loadu_ps(&ref.max.x), xyz);
+            l.c = _mm_mul_ps(_mm_add_ps(l.lo, l.hi), half);
+            alignas(16) int32_t bin[4];
+            _mm_store_si128((__m128i*)bin,
+                            _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(_mm_mul_ps(_mm_sub_ps(l.c, origin), scale), zero), last)));
+            l.left = bin[axis] < splitBin;
+            return l;
+        };
+        auto addLeft = [&](const Lanes& l) {
+            lbMin = _mm_min_ps(lbMin, l.lo), lbMax = _mm_max_ps(lbMax, l.hi);
+            lcMin = _mm_min_ps(lcMin, l.c), lcMax = _mm_max_ps(lcMax, l.c);
+        };
+        auto addRight = [&](const Lanes& l) {
+            rbMin = _mm_min_ps(rbMin, l.lo), rbMax = _mm_max_ps(rbMax, l.hi);
+            rcMin = _mm_min_ps(rcMin, l.c), rcMax = _mm_max_ps(rcMax, l.c);
+        };
+        for (;;) {
+            Lanes a{}, b{};
+            while (i < j && (a = look(p[i])).left) addLeft(a), ++i;
+            while (i < j && !(b = look(p[j - 1])).left) addRight(b), --j;
+            if (i >= j) break;
+            std::swap(p[i], p[j - 1]);
+            addLeft(b), ++i;   // b (now at i) goes left, a (now at j - 1) goes right
+            addRight(a), --j;
+        }
+        auto toVec3 = [](__m128 v) {
+            alignas(16) float f[4];
+            _mm_store_ps(f, v);
+            return Vec3(f[0], f[1], f[2]);
+        };
+        finishRange(left, r.begin, i, r.depth + 1);
+        finishRange(right, i, r.end, r.depth + 1);
+        left.bounds = Aabb{toVec3(lbMin), toVec3(lbMax)}, left.centroids = Aabb{toVec3(lcMin), toVec3(lcMax)};
+        right.bounds = Aabb{toVec3(rbMin), toVec3(rbMax)}, right.centroids = Aabb{toVec3(rcMin), toVec3(rcMax)};
+#else
         Aabb lb, lc, rb, rc;
         auto goesLeft = [&](const PrimRef& ref) { return m.binOf(centroidOf(ref)[s.axis], s.axis) < s.bin; };
         auto addLeft = [&](const PrimRef& ref) {
@@ -358,6 +413,7 @@ private:
         finishRange(left, r.begin, i, r.depth + 1);
         finishRange(right, i, r.end, r.depth + 1);
         left.bounds = lb, left.centroids = lc, right.bounds = rb, right.centroids = rc;
+#endif
     }
 
     // Object median along the widest centroid axis; ties broken by original index so it is deterministic.

@@ -186,7 +186,7 @@ FlattenResult flatten(const Scene& scene) {
     }
     for (const Mesh& mesh : scene.meshes) {
         if (!mesh.data || mesh.data->corners.empty()) continue;
-        const uint32_t index = appendMesh(prepareMesh(*mesh.data, composeTransforms(mesh.transforms)), out);
+        const uint32_t index = appendMesh(*mesh.data, composeTransforms(mesh.transforms), out);
         out.objects.push_back({ObjectKind::Mesh, index, materials.index(mesh.material)});
         if (!mesh.data->hasUvs && mesh.material != kDefaultMaterial && usesTextures(scene.materials[mesh.material]))
             result.unsupported.push_back(mesh.where.file + ":" + std::to_string(mesh.where.line) + ": " + mesh.source +

@@ -1,8 +1,12 @@
 // Mesh preparation: world-space positions, normals and Lengyel tangents per corner; BVH and upload order.
+// What is shared between triangles (world positions, computed normals, tangent sums) is computed once, and
+// each triangle's corners are then derived from it independently, straight into their place in BVH order:
+// no per-mesh copy of the triangles or corners is ever held beside SceneArrays.
 #include "device/flatten_mesh.h"
 
+#include <algorithm>
 #include <cmath>
-#include <unordered_map>
+#include <thread>
 
 #include "accel/bvh_build.h"
 #include "accel/collapse_bvh.h"
@@ -23,18 +27,183 @@ float cornerAngle(Vec3 a, Vec3 b, Vec3 c) {
     return l > 0.0f ? std::acos(std::fmin(1.0f, std::fmax(-1.0f, dot(e1, e2) / l))) : 0.0f;
 }
 
-struct CornerKey {
-    int32_t position, normal, uv;
-    bool operator==(const CornerKey& o) const { return position == o.position && normal == o.normal && uv == o.uv; }
-};
-struct CornerKeyHash {
-    size_t operator()(const CornerKey& k) const {
-        uint64_t h = (uint64_t)(uint32_t)k.position * 0x9E3779B97F4A7C15ull;
-        h ^= ((uint64_t)(uint32_t)k.normal + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
-        h ^= ((uint64_t)(uint32_t)k.uv + 0x85EBCA77C2B2AE63ull) * 0x165667B19E3779F9ull;
-        return size_t(h ^ (h >> 29));
+bool sameCorner(const MeshData::Corner& a, const MeshData::Corner& b) {
+    return a.position == b.position && a.normal == b.normal && a.uv == b.uv;
+}
+
+uint64_t hashCorner(const MeshData::Corner& k) {
+    uint64_t h = (uint64_t)(uint32_t)k.position * 0x9E3779B97F4A7C15ull;
+    h ^= ((uint64_t)(uint32_t)k.normal + 0x632BE59BD9B4E019ull) * 0xC2B2AE3D27D4EB4Full;
+    h ^= ((uint64_t)(uint32_t)k.uv + 0x85EBCA77C2B2AE63ull) * 0x165667B19E3779F9ull;
+    return h ^ (h >> 29);
+}
+
+// Numbers the distinct (position, normal, uv) corners: out[i] is corner i's number, in order of first
+// appearance. An open-addressing table of corner indices (4 bytes a slot, kept at most half full) instead
+// of a node-based map: a million-triangle mesh has three million corners.
+std::vector<uint32_t> numberDistinctCorners(const std::vector<MeshData::Corner>& corners, uint32_t& distinct) {
+    std::vector<uint32_t> number(corners.size());
+    size_t capacity = 1024;
+    while (capacity < corners.size() / 2) capacity *= 2;  // most meshes have about a sixth as many vertices
+    std::vector<uint32_t> table(capacity, UINT32_MAX);   // a representative corner's index, or empty
+    distinct = 0;
+    auto insertRepresentative = [&](std::vector<uint32_t>& t, uint32_t corner) {
+        const size_t mask = t.size() - 1;
+        for (size_t slot = hashCorner(corners[corner]) & mask;; slot = (slot + 1) & mask) {
+            if (t[slot] == UINT32_MAX) {
+                t[slot] = corner;
+                return;
+            }
+        }
+    };
+    for (uint32_t i = 0; i < (uint32_t)corners.size(); ++i) {
+        const MeshData::Corner& c = corners[i];
+        const size_t mask = table.size() - 1;
+        size_t slot = hashCorner(c) & mask;
+        for (;; slot = (slot + 1) & mask) {
+            const uint32_t rep = table[slot];
+            if (rep == UINT32_MAX) break;
+            if (sameCorner(corners[rep], c)) break;
+        }
+        if (table[slot] != UINT32_MAX) {
+            number[i] = number[table[slot]];
+            continue;
+        }
+        table[slot] = i;
+        number[i] = distinct++;
+        if ((size_t)distinct * 2 > table.size()) {
+            std::vector<uint32_t> bigger(table.size() * 2, UINT32_MAX);
+            for (uint32_t rep : table)
+                if (rep != UINT32_MAX) insertRepresentative(bigger, rep);
+            table.swap(bigger);
+        }
     }
+    return number;
+}
+
+// Runs fn(begin, end) over [0, n) in one contiguous chunk per thread (all cores); fn must only write what
+// its own indices own.
+template <typename Fn>
+void parallelChunks(size_t n, Fn&& fn) {
+    const unsigned threads = n >= 16384 ? std::max(1u, std::thread::hardware_concurrency()) : 1u;
+    const size_t chunk = (n + threads - 1) / threads;
+    std::vector<std::thread> pool;
+    for (unsigned p = 1; p < threads; ++p) {
+        const size_t b = std::min(n, p * chunk), e = std::min(n, (p + 1) * chunk);
+        if (b < e) pool.emplace_back([&fn, b, e] { fn(b, e); });
+    }
+    fn(0, std::min(n, chunk));
+    for (std::thread& t : pool) t.join();
+}
+
+// What the triangles of one mesh share, computed once: world positions, smooth normals per position (when
+// the file has no normals), Lengyel tangent sums per distinct corner (when it has uvs). Then any
+// triangle's world positions and shading corners, independently of the others.
+class MeshShading {
+public:
+    MeshShading(const MeshData& data, const Affine3& worldFromObject)
+        : data_(data), objectFromWorld_(inverse(worldFromObject)), positions_(data.positions.size()) {
+        for (size_t i = 0; i < positions_.size(); ++i) positions_[i] = worldFromObject.applyToPoint(data.positions[i]);
+        const size_t triangleCount = data.corners.size() / 3;
+
+        // Smooth normals per position for corners without one: face normals weighted by the corner's angle
+        // (summed in triangle order, as every corner of a position is).
+        if (!data.hasNormals) {
+            computedNormals_.assign(positions_.size(), Vec3(0.0f));
+            for (size_t t = 0; t < triangleCount; ++t) {
+                const MeshTriangle tri = triangle(t);
+                const Vec3 face = normalizeOr(cross(tri.p1 - tri.p0, tri.p2 - tri.p0), Vec3(0.0f));
+                const Vec3 p[3] = {tri.p0, tri.p1, tri.p2};
+                for (int k = 0; k < 3; ++k)
+                    computedNormals_[data.corners[3 * t + k].position] +=
+                        face * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+            }
+        }
+
+        // Lengyel's tangents, summed over the triangles sharing a corner's (position, normal, uv). Without
+        // uvs every sum is zero, which gives anyOrthonormal(n) and a + handedness: nothing to number.
+        if (data.hasUvs) {
+            uint32_t distinct = 0;
+            cornerVertex_ = numberDistinctCorners(data.corners, distinct);
+            tangentSum_.assign(distinct, Vec3(0.0f));
+            bitangentSum_.assign(distinct, Vec3(0.0f));
+            for (size_t t = 0; t < triangleCount; ++t) {
+                const MeshTriangle tri = triangle(t);
+                float u[3], v[3];
+                for (int k = 0; k < 3; ++k) uvOf(data.corners[3 * t + k], u[k], v[k]);
+                const Vec3 e1 = tri.p1 - tri.p0, e2 = tri.p2 - tri.p0;
+                const float du1 = u[1] - u[0], dv1 = v[1] - v[0];
+                const float du2 = u[2] - u[0], dv2 = v[2] - v[0];
+                const float det = du1 * dv2 - du2 * dv1;
+                if (!(std::fabs(det) > 0.0f)) continue;  // uvs collapsed on this triangle: no direction to give
+                const float r = 1.0f / det;
+                const Vec3 tangent = (e1 * dv2 - e2 * dv1) * r;
+                const Vec3 bitangent = (e2 * du1 - e1 * du2) * r;
+                if (!isFinite(tangent) || !isFinite(bitangent)) continue;
+                for (int k = 0; k < 3; ++k) {
+                    tangentSum_[cornerVertex_[3 * t + k]] += tangent;
+                    bitangentSum_[cornerVertex_[3 * t + k]] += bitangent;
+                }
+            }
+        }
+    }
+
+    MeshTriangle triangle(size_t t) const {
+        const MeshData::Corner* c = &data_.corners[3 * t];
+        return {positions_[c[0].position], positions_[c[1].position], positions_[c[2].position]};
+    }
+
+    TriangleCorners corners(size_t t) const {
+        TriangleCorners out;
+        const MeshTriangle tri = triangle(t);
+        const Vec3 face = normalizeOr(cross(tri.p1 - tri.p0, tri.p2 - tri.p0), Vec3(0.0f, 1.0f, 0.0f));
+        for (int k = 0; k < 3; ++k) {
+            const MeshData::Corner& c = data_.corners[3 * t + k];
+            MeshCorner& mc = out.corner[k];
+            const Vec3 n0 = c.normal >= 0 ? objectFromWorld_.applyTransposeToVector(data_.normals[c.normal])
+                                          : computedNormals_[c.position];
+            const Vec3 n = normalizeOr(n0, face);
+            mc.normal = n;
+            uvOf(c, mc.u, mc.v);
+            // Gram–Schmidt against the normal; the handedness says which way the bitangent points.
+            const Vec3 ts = data_.hasUvs ? tangentSum_[cornerVertex_[3 * t + k]] : Vec3(0.0f);
+            const Vec3 bs = data_.hasUvs ? bitangentSum_[cornerVertex_[3 * t + k]] : Vec3(0.0f);
+            mc.tangent = normalizeOr(ts - n * dot(n, ts), anyOrthonormal(n));
+            mc.tangentSign = dot(cross(n, mc.tangent), bs) < 0.0f ? -1.0f : 1.0f;
+        }
+        return out;
+    }
+
+    // The triangle's bounds as the BVH sees them.
+    Aabb bounds(size_t t) const {
+        const MeshTriangle tri = triangle(t);
+        return Aabb{min(tri.p0, min(tri.p1, tri.p2)), max(tri.p0, max(tri.p1, tri.p2))};
+    }
+
+private:
+    void uvOf(const MeshData::Corner& c, float& u, float& v) const {
+        u = c.uv >= 0 ? data_.uvs[2 * c.uv] : 0.0f;
+        v = c.uv >= 0 ? data_.uvs[2 * c.uv + 1] : 0.0f;
+    }
+
+    const MeshData& data_;
+    const Affine3 objectFromWorld_;
+    std::vector<Vec3> positions_;        // world space
+    std::vector<Vec3> computedNormals_;  // per position, unnormalised; only without normals in the file
+    std::vector<uint32_t> cornerVertex_;  // per corner: its distinct (position, normal, uv); only with uvs
+    std::vector<Vec3> tangentSum_, bitangentSum_;
 };
+
+// Appends the wide nodes of `bvh` (moved when they are the first) and the MeshShape of a mesh whose
+// triangles will be placed at out.triangles[first ...]; returns the shape's index.
+uint32_t appendShape(const Bvh& bvh, uint32_t first, uint32_t count, bool hasUvs, SceneArrays& out) {
+    std::vector<WideBvhNode> nodes = collapseBvh(bvh);
+    const MeshShape shape{(uint32_t)out.meshNodes.size(), first, count, hasUvs ? 1u : 0u};
+    if (out.meshNodes.empty()) out.meshNodes = std::move(nodes);
+    else out.meshNodes.insert(out.meshNodes.end(), nodes.begin(), nodes.end());
+    out.meshes.push_back(shape);
+    return (uint32_t)out.meshes.size() - 1;
+}
 
 }  // namespace
 
@@ -44,101 +213,58 @@ PreparedMesh prepareMesh(const MeshData& data, const Affine3& worldFromObject) {
     out.hasUvs = data.hasUvs;
     out.triangles.resize(triangleCount);
     out.corners.resize(triangleCount);
-
-    std::vector<Vec3> positions(data.positions.size());
-    for (size_t i = 0; i < positions.size(); ++i) positions[i] = worldFromObject.applyToPoint(data.positions[i]);
-    const Affine3 objectFromWorld = inverse(worldFromObject);
-
-    for (size_t t = 0; t < triangleCount; ++t) {
-        const MeshData::Corner* c = &data.corners[3 * t];
-        out.triangles[t] = {positions[c[0].position], positions[c[1].position], positions[c[2].position]};
-    }
-
-    // Smooth normals per position for corners without one: face normals weighted by the corner's angle.
-    std::vector<Vec3> computedNormals;
-    if (!data.hasNormals) {
-        computedNormals.assign(positions.size(), Vec3(0.0f));
-        for (size_t t = 0; t < triangleCount; ++t) {
-            const MeshTriangle& tri = out.triangles[t];
-            const Vec3 face = normalizeOr(cross(tri.p1 - tri.p0, tri.p2 - tri.p0), Vec3(0.0f));
-            const Vec3 p[3] = {tri.p0, tri.p1, tri.p2};
-            for (int k = 0; k < 3; ++k)
-                computedNormals[data.corners[3 * t + k].position] += face * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+    const MeshShading shading(data, worldFromObject);
+    parallelChunks(triangleCount, [&](size_t b, size_t e) {
+        for (size_t t = b; t < e; ++t) {
+            out.triangles[t] = shading.triangle(t);
+            out.corners[t] = shading.corners(t);
         }
-    }
-
-    for (size_t t = 0; t < triangleCount; ++t) {
-        const MeshTriangle& tri = out.triangles[t];
-        const Vec3 face = normalizeOr(cross(tri.p1 - tri.p0, tri.p2 - tri.p0), Vec3(0.0f, 1.0f, 0.0f));
-        for (int k = 0; k < 3; ++k) {
-            const MeshData::Corner& c = data.corners[3 * t + k];
-            MeshCorner& mc = out.corners[t].corner[k];
-            const Vec3 n = c.normal >= 0 ? objectFromWorld.applyTransposeToVector(data.normals[c.normal])
-                                         : computedNormals[c.position];
-            mc.normal = normalizeOr(n, face);
-            mc.u = c.uv >= 0 ? data.uvs[2 * c.uv] : 0.0f;
-            mc.v = c.uv >= 0 ? data.uvs[2 * c.uv + 1] : 0.0f;
-        }
-    }
-
-    // Lengyel's tangents, summed over the triangles sharing a corner's (position, normal, uv).
-    std::unordered_map<CornerKey, uint32_t, CornerKeyHash> vertexOf;
-    vertexOf.reserve(data.corners.size());
-    std::vector<uint32_t> cornerVertex(data.corners.size());
-    for (size_t i = 0; i < data.corners.size(); ++i) {
-        const MeshData::Corner& c = data.corners[i];
-        cornerVertex[i] = vertexOf.try_emplace(CornerKey{c.position, c.normal, c.uv}, (uint32_t)vertexOf.size()).first->second;
-    }
-    std::vector<Vec3> tangentSum(vertexOf.size(), Vec3(0.0f)), bitangentSum(vertexOf.size(), Vec3(0.0f));
-    if (data.hasUvs) {
-        for (size_t t = 0; t < triangleCount; ++t) {
-            const MeshTriangle& tri = out.triangles[t];
-            const MeshCorner* mc = out.corners[t].corner;
-            const Vec3 e1 = tri.p1 - tri.p0, e2 = tri.p2 - tri.p0;
-            const float du1 = mc[1].u - mc[0].u, dv1 = mc[1].v - mc[0].v;
-            const float du2 = mc[2].u - mc[0].u, dv2 = mc[2].v - mc[0].v;
-            const float det = du1 * dv2 - du2 * dv1;
-            if (!(std::fabs(det) > 0.0f)) continue;  // uvs collapsed on this triangle: no direction to give
-            const float r = 1.0f / det;
-            const Vec3 tangent = (e1 * dv2 - e2 * dv1) * r;
-            const Vec3 bitangent = (e2 * du1 - e1 * du2) * r;
-            if (!isFinite(tangent) || !isFinite(bitangent)) continue;
-            for (int k = 0; k < 3; ++k) {
-                tangentSum[cornerVertex[3 * t + k]] += tangent;
-                bitangentSum[cornerVertex[3 * t + k]] += bitangent;
-            }
-        }
-    }
-    for (size_t t = 0; t < triangleCount; ++t) {
-        for (int k = 0; k < 3; ++k) {
-            MeshCorner& mc = out.corners[t].corner[k];
-            const uint32_t vtx = cornerVertex[3 * t + k];
-            const Vec3 n = mc.normal;
-            // Gram–Schmidt against the normal; the handedness says which way the bitangent points.
-            mc.tangent = normalizeOr(tangentSum[vtx] - n * dot(n, tangentSum[vtx]), anyOrthonormal(n));
-            mc.tangentSign = dot(cross(n, mc.tangent), bitangentSum[vtx]) < 0.0f ? -1.0f : 1.0f;
-        }
-    }
+    });
     return out;
 }
 
 uint32_t appendMesh(const PreparedMesh& mesh, SceneArrays& out) {
-    std::vector<Aabb> bounds(mesh.triangles.size());
-    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
-        const MeshTriangle& t = mesh.triangles[i];
-        bounds[i] = Aabb{min(t.p0, min(t.p1, t.p2)), max(t.p0, max(t.p1, t.p2))};
+    const uint32_t count = (uint32_t)mesh.triangles.size();
+    std::vector<uint32_t> order;
+    uint32_t index;
+    {
+        Bvh bvh = buildBvh(
+            count,
+            [&](uint32_t i) {
+                const MeshTriangle& t = mesh.triangles[i];
+                return Aabb{min(t.p0, min(t.p1, t.p2)), max(t.p0, max(t.p1, t.p2))};
+            },
+            triangleBvhOptions());
+        index = appendShape(bvh, (uint32_t)out.triangles.size(), count, mesh.hasUvs, out);
+        order = std::move(bvh.primitiveOrder);
     }
-    const Bvh bvh = buildBvh(bounds, triangleBvhOptions());
-    const std::vector<WideBvhNode> nodes = collapseBvh(bvh);
-    const MeshShape shape{(uint32_t)out.meshNodes.size(), (uint32_t)out.triangles.size(),
-                          (uint32_t)mesh.triangles.size(), mesh.hasUvs ? 1u : 0u};
-    out.meshNodes.insert(out.meshNodes.end(), nodes.begin(), nodes.end());
-    for (uint32_t old : bvh.primitiveOrder) {
+    for (uint32_t old : order) {
         out.triangles.push_back(mesh.triangles[old]);
         out.triangleCorners.push_back(mesh.corners[old]);
     }
-    out.meshes.push_back(shape);
-    return (uint32_t)out.meshes.size() - 1;
+    return index;
+}
+
+uint32_t appendMesh(const MeshData& data, const Affine3& worldFromObject, SceneArrays& out) {
+    const uint32_t count = (uint32_t)(data.corners.size() / 3);
+    const MeshShading shading(data, worldFromObject);
+    const size_t first = out.triangles.size();
+    std::vector<uint32_t> order;
+    uint32_t index;
+    {  // the binary BVH and the builder's arrays are gone before the triangles are written
+        Bvh bvh = buildBvh(count, [&](uint32_t t) { return shading.bounds(t); }, triangleBvhOptions());
+        index = appendShape(bvh, (uint32_t)first, count, data.hasUvs, out);
+        order = std::move(bvh.primitiveOrder);
+    }
+    out.triangles.resize(first + count);
+    out.triangleCorners.resize(first + count);
+    parallelChunks(count, [&](size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i) {
+            out.triangles[first + i] = shading.triangle(order[i]);
+            out.triangleCorners[first + i] = shading.corners(order[i]);
+        }
+    });
+    return index;
 }
 
 }  // namespace trazo
