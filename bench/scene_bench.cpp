@@ -1,7 +1,8 @@
 // trazo_bench: time, Mrays/s and error of seed scenes at their own settings, per backend, next to the
 // thesis's GTX 560 figures. Usage: trazo_bench [--threads N] [--reference-cycles K] [--passes P] SCENE...
-// --passes P renders P passes instead of one full cycle (e.g. for instruction counts under callgrind).
-// Error: RMSE (and relative RMSE) of the one-cycle image against a K-cycle reference of the same backend
+// Renders what `trazo --render SCENE` does: the headless blocks (headlessBlocks), one cycle of the camera-path
+// grids; --passes P renders P such passes instead (e.g. for instruction counts under callgrind).
+// Error: RMSE (and relative RMSE) of that image against a K-times-longer reference of the same backend
 // with another seed; K = 0 skips it. "all-features s" renders the same passes with the unspecialised
 // (all-features) instance of renderSample, so the last column is what feature specialisation saves.
 #include <chrono>
@@ -40,8 +41,10 @@ double thesisSeconds(const std::string& path) {
     return 0;
 }
 
-std::vector<Vec3> render(Backend& b, const Scene& scene, uint32_t passes, uint32_t seed, RenderOutcome& outcome) {
-    const FrameParams frame = makeFrameParams(scene, scene.settings.renderWidth, scene.settings.renderHeight, seed);
+std::vector<Vec3> render(Backend& b, const Scene& scene, const StrataBlocks& blocks, uint32_t passes, uint32_t seed,
+                         RenderOutcome& outcome) {
+    const FrameParams frame =
+        makeFrameParams(scene, scene.settings.renderWidth, scene.settings.renderHeight, seed, blocks);
     b.reset();
     RenderLimits limits;
     limits.passes = passes;
@@ -82,18 +85,19 @@ int main(int argc, char** argv) {
             return 2;
         }
         const FlattenResult flat = flatten(scene);
-        const uint32_t cycle = fixedPasses ? fixedPasses : fullCyclePasses(flat.arrays, StrataBlocks::ones());
+        const StrataBlocks blocks = headlessBlocks(flat.arrays);
+        const uint32_t cycle = fixedPasses ? fixedPasses : cameraPathPasses(flat.arrays, blocks);
         for (BackendChoice choice : choices) {
             std::string error;
             auto backend = createBackend(choice, threads, error);
             backend->upload(flat.arrays);
             backend->resize(scene.settings.renderWidth, scene.settings.renderHeight);
             RenderOutcome timed, ref;
-            render(*backend, scene, 1, 0, timed);  // warm-up (CUDA context, caches)
-            const std::vector<Vec3> image = render(*backend, scene, cycle, 1, timed);
+            render(*backend, scene, blocks, 1, 0, timed);  // warm-up (CUDA context, caches)
+            const std::vector<Vec3> image = render(*backend, scene, blocks, cycle, 1, timed);
             double rmse = NAN, relative = NAN;
             if (referenceCycles > 0) {
-                const std::vector<Vec3> reference = render(*backend, scene, cycle * referenceCycles, 2, ref);
+                const std::vector<Vec3> reference = render(*backend, scene, blocks, cycle * referenceCycles, 2, ref);
                 double se = 0, mean = 0;
                 for (size_t i = 0; i < image.size(); ++i) {
                     const Vec3 d = image[i] - reference[i];
@@ -107,7 +111,7 @@ int main(int argc, char** argv) {
             oracleArrays.features |= kSpecialisedFeatures;
             RenderOutcome oracle;
             backend->upload(oracleArrays);
-            render(*backend, scene, cycle, 1, oracle);
+            render(*backend, scene, blocks, cycle, 1, oracle);
             backend->upload(flat.arrays);
             const double pixels = double(scene.settings.renderWidth) * scene.settings.renderHeight;
             std::printf("| %s | %s | %s | %dx%d | %u | %.4f | %.2f | %.1f | %.5f | %.4f | %.4f | %.4f | %.3f |\n",

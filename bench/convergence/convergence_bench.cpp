@@ -1,6 +1,7 @@
 // convergence_bench: for one scene, a high-pass reference (another seed), then one render read at 1, 2, 4, …
 // passes (and at whole cycles), with time, RMSE, relative error and relative MSE against the reference and the
-// render's own error estimate; optionally the fixed-grid estimator too. Writes DIR/NAME.csv and DIR/NAME.png
+// render's own error estimate, for one stratum per pass and for the headless default's blocks (the same time);
+// optionally the fixed-grid estimator too. Writes DIR/NAME.csv and DIR/NAME.png
 // (log–log error against time, with a 1/√t line), prints the table and the time to reach 5%, 2% and 1%.
 //   convergence_bench SCENE [--reference-passes R] [--max-passes M] [--threads N] [--fixed-grid-too]
 //                           [--out-dir DIR] [--width W] [--height H] [--seed S] [--backend cpu|cuda]
@@ -137,6 +138,10 @@ int main(int argc, char** argv) {
     SeriesRequest req;
     req.width = width, req.height = height, req.seed = o.seed, req.maxPasses = o.maxPasses;
     const std::vector<ConvergencePoint> progressive = runSeries(*backend, scene, flat.arrays, ref, req);
+    // The headless default's blocks (whole camera-path grids where nothing cycles above them), same time budget.
+    req.blocks = headlessBlocks(flat.arrays);
+    req.maxSeconds = progressive.empty() ? 0 : progressive.back().seconds;
+    const std::vector<ConvergencePoint> blocked = runSeries(*backend, scene, flat.arrays, ref, req);
     std::vector<ConvergencePoint> fixedGrid;
     if (o.fixedGridToo) {
         req.blocks = StrataBlocks::whole();
@@ -147,6 +152,7 @@ int main(int argc, char** argv) {
     std::printf("| estimator | passes | render s | RMSE | rel. error | raw rel. error | rel. MSE | estimated rel. error | halves |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|\n");
     printTable("progressive", progressive);
+    printTable("default-blocks", blocked);
     if (o.fixedGridToo) printTable("fixed-grid", fixedGrid);
 
     std::error_code ec;
@@ -157,6 +163,7 @@ int main(int argc, char** argv) {
         csv << "estimator,passes,seconds,rmse,raw_rel_error,rel_mse,rel_error,est_rel_error,halves_balanced,"
                "whole_cycles\n";
         writeCsvRows(csv, "progressive", progressive);
+        writeCsvRows(csv, "default-blocks", blocked);
         writeCsvRows(csv, "fixed-grid", fixedGrid);
         if (!csv) std::fprintf(stderr, "convergence_bench: cannot write %s\n", csvPath.c_str());
     }
@@ -177,6 +184,8 @@ int main(int argc, char** argv) {
                             [](const ConvergencePoint& p) { return p.passes > 1; }, true);
     est.dashed = true;
     plot.series.push_back(est);
+    plot.series.push_back(series(blocked, "default blocks (" + describeBlocks(req.blocks) + ")",
+                                 Vec3(0.10f, 0.60f, 0.25f), nullptr));
     if (o.fixedGridToo) plot.series.push_back(series(fixedGrid, "fixed grid", Vec3(0.85f, 0.10f, 0.10f), nullptr));
     // 1/√t through the last progressive point, across the whole time range.
     if (!progressive.empty()) {
@@ -209,6 +218,7 @@ int main(int argc, char** argv) {
             else std::printf("  %s not reached", label);
         };
         show("progressive", progressive);
+        show("default-blocks", blocked);
         if (o.fixedGridToo) show("fixed-grid", fixedGrid);
         std::printf("\n");
     }
