@@ -1,6 +1,8 @@
 // Block lexer (host): line-based, as the thesis's reader was; braces, quotes and `#` comments anywhere.
 #include "scene/block_lexer.h"
 
+#include "io/text_file.h"
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -282,16 +284,7 @@ bool checkReadable(const std::string& path, std::string& reason) {
 
 bool readTextFile(const std::string& path, std::string& contents, std::string& reason) {
     if (!checkReadable(path, reason)) return false;
-    errno = 0;
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) {
-        reason = std::strerror(errno != 0 ? errno : EIO);
-        return false;
-    }
-    contents = std::move(buffer).str();
-    return true;
+    return readWholeFile(path, contents, reason);  // one read into a string of the file's size (OBJ files are large)
 }
 
 std::string resolveRelativePath(const std::string& namingFile, const std::string& written) {

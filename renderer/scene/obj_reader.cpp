@@ -1,16 +1,22 @@
 // OBJ reader (host): a line check of our own (tinyobjloader reads bad numbers as 0 and reports index
-// errors at the last line), then tinyobjloader for the data, then fan triangulation into MeshData.
+// errors at the last line), and tinyobjloader's callback reader for the data, fan-triangulated straight
+// into MeshData (no attrib_t/shape_t copies, no stringstream copy of the text). For a large file the two
+// run at once on two threads over the same text; the data is kept only if the check passes, and every
+// index is range-checked again against what tinyobjloader read.
 #include "scene/obj_reader.h"
 
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <regex>
+#include <istream>
+#include <streambuf>
 #include <string_view>
+#include <thread>
 #include <vector>
 
-#include "scene/block_lexer.h"
+#include "io/text_file.h"
 
 namespace trazo {
 namespace {
@@ -22,8 +28,9 @@ struct Word {
     int column;
 };
 
-std::vector<Word> splitWords(std::string_view line) {
-    std::vector<Word> words;
+// Into `words` (cleared; its capacity is kept from line to line).
+void splitWords(std::string_view line, std::vector<Word>& words) {
+    words.clear();
     size_t i = 0;
     while (i < line.size()) {
         if (line[i] == '#') break;
@@ -35,7 +42,6 @@ std::vector<Word> splitWords(std::string_view line) {
         while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r' && line[i] != '#') ++i;
         words.push_back({line.substr(start, i - start), int(start) + 1});
     }
-    return words;
 }
 
 bool parseReal(std::string_view s, double& out) {
@@ -57,7 +63,8 @@ public:
     ObjChecker(const std::string& file, Diagnostics& diags) : file_(file), diags_(diags) {}
 
     void checkLine(std::string_view line, int lineNumber) {
-        const std::vector<Word> words = splitWords(line);
+        splitWords(line, words_);
+        const std::vector<Word>& words = words_;
         if (words.empty()) return;
         const std::string_view keyword = words[0].text;
         if (keyword == "v") {
@@ -170,6 +177,7 @@ private:
     Diagnostics& diags_;
     long counts_[3] = {0, 0, 0};  // v, vt, vn
     std::vector<Forward> forward_;
+    std::vector<Word> words_;
     int errors_ = 0;
 };
 
@@ -186,78 +194,145 @@ bool checkObjText(const std::string& text, const std::string& file, Diagnostics&
     return checker.finish();
 }
 
-int lineOf(const std::string& message) {
-    static const std::regex kLine(R"(line:?\s*(\d+))");
-    std::smatch m;
-    return std::regex_search(message, m, kLine) ? std::stoi(m[1].str()) : 0;
-}
+// A read-only streambuf over text in memory, for tinyobjloader's istream interface without a copy.
+class TextStreambuf : public std::streambuf {
+public:
+    explicit TextStreambuf(std::string_view text) {
+        char* begin = const_cast<char*>(text.data());  // get area only: never written through
+        setg(begin, begin, begin + text.size());
+    }
+    size_t offset() const { return (size_t)(gptr() - eback()); }  // how far tinyobjloader has read
+};
 
-std::string firstLine(std::string s) {
-    const size_t end = s.find_first_of("\r\n");
-    if (end != std::string::npos) s.resize(end);
-    return s;
+// MeshData from tinyobjloader's callbacks: positions, normals and uvs as they come, each face fanned into
+// corners with its indices resolved (1-based, or negative: relative to what was read before the line).
+struct MeshBuilder {
+    MeshData mesh;
+    bool allNormals = true, allUvs = true;
+    // The first face with an index the check did not see as tinyobjloader does (text after a face's
+    // vertices, which tinyobjloader reads as index 0; a lone \r line break): where the reading stood then.
+    bool badIndex = false;
+    size_t badOffset = 0;
+    const TextStreambuf* stream = nullptr;
+    std::vector<MeshData::Corner> face;
+
+    static int32_t resolve(int raw, size_t count) {
+        if (raw > 0) return (int32_t)(raw - 1);
+        if (raw < 0 && (size_t)(-(int64_t)raw) <= count) return (int32_t)((int64_t)count + raw);
+        return -1;
+    }
+    static void vertex(void* self, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z, tinyobj::real_t) {
+        static_cast<MeshBuilder*>(self)->mesh.positions.push_back({x, y, z});
+    }
+    static void normal(void* self, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z) {
+        static_cast<MeshBuilder*>(self)->mesh.normals.push_back({x, y, z});
+    }
+    static void texcoord(void* self, tinyobj::real_t u, tinyobj::real_t v, tinyobj::real_t) {
+        std::vector<float>& uvs = static_cast<MeshBuilder*>(self)->mesh.uvs;
+        uvs.push_back(u);
+        uvs.push_back(v);
+    }
+    static void indices(void* selfIn, tinyobj::index_t* index, int count) {
+        MeshBuilder& self = *static_cast<MeshBuilder*>(selfIn);
+        MeshData& m = self.mesh;
+        self.face.resize((size_t)count);
+        for (int k = 0; k < count; ++k) {
+            MeshData::Corner& c = self.face[(size_t)k];
+            c.position = resolve(index[k].vertex_index, m.positions.size());
+            c.normal = index[k].normal_index == 0 ? -1 : resolve(index[k].normal_index, m.normals.size());
+            c.uv = index[k].texcoord_index == 0 ? -1 : resolve(index[k].texcoord_index, m.uvs.size() / 2);
+            if ((c.position < 0 || (index[k].normal_index != 0 && c.normal < 0) ||
+                 (index[k].texcoord_index != 0 && c.uv < 0)) && !self.badIndex) {
+                self.badIndex = true;
+                self.badOffset = self.stream ? self.stream->offset() : 0;
+            }
+            self.allNormals = self.allNormals && c.normal >= 0;
+            self.allUvs = self.allUvs && c.uv >= 0;
+        }
+        for (int k = 1; k + 1 < count; ++k) {  // fan around the polygon's first corner
+            m.corners.push_back(self.face[0]);
+            m.corners.push_back(self.face[(size_t)k]);
+            m.corners.push_back(self.face[(size_t)k + 1]);
+        }
+    }
+};
+
+bool parseWithTinyObj(const std::string& text, MeshBuilder& builder) {
+    TextStreambuf buffer(text);
+    builder.stream = &buffer;
+    std::istream in(&buffer);
+    tinyobj::callback_t callbacks;
+    callbacks.vertex_cb = MeshBuilder::vertex;
+    callbacks.normal_cb = MeshBuilder::normal;
+    callbacks.texcoord_cb = MeshBuilder::texcoord;
+    callbacks.index_cb = MeshBuilder::indices;
+    std::string warnings, errors;
+    const bool ok = tinyobj::LoadObjWithCallback(in, callbacks, &builder, nullptr, &warnings, &errors);
+    builder.stream = nullptr;
+    return ok;
 }
 
 }  // namespace
 
 std::shared_ptr<const MeshData> readObjText(const std::string& text, const std::string& pathForMessages,
                                             Diagnostics& diags) {
-    if (!checkObjText(text, pathForMessages, diags)) return nullptr;
-
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = false;  // tinyobjloader splits quads by their shorter diagonal; SPEC asks for a fan
-    config.vertex_color = false;
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromString(text, "", config)) {
-        const std::string& why = reader.Error();
-        diags.error({pathForMessages, lineOf(why), 0}, why.empty() ? "malformed OBJ file" : firstLine(why));
+    // The check and the parse read the same text independently; on a large file they share the cores.
+    MeshBuilder builder;
+    bool parsed = false;
+    bool checked;
+    if (text.size() >= (1u << 20) && std::thread::hardware_concurrency() > 1) {
+        Diagnostics checkDiags;
+        std::thread parser([&] { parsed = parseWithTinyObj(text, builder); });
+        checked = checkObjText(text, pathForMessages, checkDiags);
+        parser.join();
+        for (Diagnostic& d : checkDiags.items) diags.items.push_back(std::move(d));
+    } else {
+        checked = checkObjText(text, pathForMessages, diags);
+        if (checked) parsed = parseWithTinyObj(text, builder);
+    }
+    if (!checked) return nullptr;
+    MeshData& mesh = builder.mesh;
+    if (!parsed) {
+        diags.error({pathForMessages, 0, 0}, "malformed OBJ file");
         return nullptr;
     }
-
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
-    auto mesh = std::make_shared<MeshData>();
-    for (size_t i = 0; i + 2 < attrib.vertices.size(); i += 3) {
-        mesh->positions.push_back({attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]});
+    if (builder.badIndex) {
+        // The face's line: tinyobjloader had read it through its line break.
+        const size_t end = builder.badOffset > 0 ? builder.badOffset - 1 : 0;
+        const int line = 1 + (int)std::count(text.begin(), text.begin() + (ptrdiff_t)std::min(end, text.size()), '\n');
+        diags.error({pathForMessages, line, 0}, "malformed face: tinyobjloader reads an index 0 or out of range here "
+                                                "(text after the face's vertices, such as a # comment?)");
+        return nullptr;
     }
-    for (size_t i = 0; i + 2 < attrib.normals.size(); i += 3) {
-        mesh->normals.push_back({attrib.normals[i], attrib.normals[i + 1], attrib.normals[i + 2]});
-    }
-    mesh->uvs.assign(attrib.texcoords.begin(), attrib.texcoords.end());
-
-    bool allNormals = true, allUvs = true;
-    auto corner = [&](const tinyobj::index_t& x) {
-        allNormals = allNormals && x.normal_index >= 0;
-        allUvs = allUvs && x.texcoord_index >= 0;
-        return MeshData::Corner{x.vertex_index, x.normal_index, x.texcoord_index};
-    };
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-        size_t base = 0;
-        for (const unsigned int n : shape.mesh.num_face_vertices) {
-            for (size_t k = 1; k + 1 < n; ++k) {  // fan around the polygon's first corner
-                mesh->corners.push_back(corner(shape.mesh.indices[base]));
-                mesh->corners.push_back(corner(shape.mesh.indices[base + k]));
-                mesh->corners.push_back(corner(shape.mesh.indices[base + k + 1]));
-            }
-            base += n;
+    // Every index within what tinyobjloader itself read (what the resolution above checked already for
+    // relative ones; positive ones may point forward).
+    for (const MeshData::Corner& c : mesh.corners) {
+        if ((size_t)c.position >= mesh.positions.size() || (c.normal >= 0 && (size_t)c.normal >= mesh.normals.size()) ||
+            (c.uv >= 0 && (size_t)c.uv >= mesh.uvs.size() / 2)) {
+            diags.error({pathForMessages, 0, 0}, "malformed OBJ file: a face index is out of range as tinyobjloader "
+                                                 "reads the lines (line breaks other than \\n or \\r\\n?)");
+            return nullptr;
         }
     }
-    if (mesh->corners.empty()) {
+    if (mesh.corners.empty()) {
         diags.error({pathForMessages, 0, 0}, "OBJ file has no faces");
         return nullptr;
     }
-    mesh->hasNormals = allNormals;
-    mesh->hasUvs = allUvs;
+    mesh.hasNormals = builder.allNormals;
+    mesh.hasUvs = builder.allUvs;
     // A partial attribute is treated as absent, so that consumers need only the two flags.
-    for (MeshData::Corner& c : mesh->corners) {
-        if (!allNormals) c.normal = -1;
-        if (!allUvs) c.uv = -1;
+    if (!mesh.hasNormals || !mesh.hasUvs) {
+        for (MeshData::Corner& c : mesh.corners) {
+            if (!mesh.hasNormals) c.normal = -1;
+            if (!mesh.hasUvs) c.uv = -1;
+        }
     }
-    return mesh;
+    return std::make_shared<MeshData>(std::move(mesh));
 }
 
 std::shared_ptr<const MeshData> readObjFile(const std::string& path, Diagnostics& diags) {
     std::string text, reason;
-    if (!readTextFile(path, text, reason)) {
+    if (!readWholeFile(path, text, reason)) {
         diags.error({path, 0, 0}, "cannot read OBJ file: " + reason);
         return nullptr;
     }

@@ -148,6 +148,53 @@ TEST(ObjReaderTest, UnreadableFileNamesPathAndReason) {
     EXPECT_EQ(firstError(diags), "/nonexistent/trazo/x.obj: error: cannot read OBJ file: No such file or directory");
 }
 
+// tinyobjloader also breaks lines at a lone \r, which the line check does not: a face hidden behind one
+// must not reach the mesh with an index past what was read (it once did, as index 8 of 3 positions).
+TEST(ObjReaderTest, FacesBehindALoneCarriageReturnAreRangeChecked) {
+    for (const char* text : {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nx\rf 1 2 9\n",
+                             "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nx\rf 1 2 -5\n"}) {
+        Diagnostics diags;
+        EXPECT_FALSE(readObjText(text, "cr.obj", diags)) << text;
+        EXPECT_TRUE(diags.hasErrors());
+    }
+}
+
+// tinyobjloader reads text after a face's vertices (a comment) as a vertex index 0: reported at its line.
+TEST(ObjReaderTest, CommentAfterAFaceIsReportedAtItsLine) {
+    Diagnostics diags;
+    EXPECT_FALSE(readObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3 # note\n", "c.obj", diags));
+    EXPECT_EQ(firstError(diags).rfind("c.obj:5: error: malformed face", 0), 0u) << firstError(diags);
+}
+
+// A text of a megabyte or more is checked and parsed on two threads: the same mesh, the same first error.
+TEST(ObjReaderTest, LargeTextsReadAsSmallOnes) {
+    std::string grid;
+    const int n = 300;  // (n + 1)² vertices, 2n² triangles: about 2.5 MB
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j) grid += "v " + std::to_string(i) + " " + std::to_string(j) + " 0.5\n";
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const int a = i * (n + 1) + j + 1, b = a + 1, c = a + n + 2, d = a + n + 1;
+            grid += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\nf -1 -" +
+                    std::to_string(n + 2) + " " + std::to_string(d) + "\n";
+        }
+    ASSERT_GE(grid.size(), 1u << 20);
+    Diagnostics diags;
+    const auto mesh = readObjText(grid, "grid.obj", diags);
+    ASSERT_TRUE(mesh) << firstError(diags);
+    ASSERT_EQ(mesh->positions.size(), size_t((n + 1) * (n + 1)));
+    ASSERT_EQ(mesh->corners.size(), size_t(6 * n * n));
+    EXPECT_EQ(mesh->positions.back().x, float(n));
+    const size_t last = mesh->corners.size() - 3;  // the last face: f -1 -(n+2) d, with -1 the last vertex
+    EXPECT_EQ(mesh->corners[last].position, (n + 1) * (n + 1) - 1);
+    EXPECT_EQ(mesh->corners[last + 1].position, (n + 1) * (n + 1) - n - 2);
+
+    Diagnostics bad;
+    EXPECT_FALSE(readObjText(grid + "v 1 oops 2\n", "grid.obj", bad));
+    EXPECT_EQ(firstError(bad), "grid.obj:" + std::to_string((n + 1) * (n + 1) + 2 * n * n + 1) +
+                                   ":5: error: 'oops' is not a finite number");
+}
+
 TEST(ObjReaderTest, ManyErrorsAreCapped) {
     std::string text;
     for (int i = 0; i < 100; ++i) text += "v a b c\n";
