@@ -52,7 +52,7 @@ int runHeadlessRender(const CommandLine& options) {
     if (diags.hasErrors()) return 2;
     stats.readSeconds = secondsSince(t0);
     const auto buildStart = std::chrono::steady_clock::now();
-    const FlattenResult flat = flatten(scene);
+    FlattenResult flat = flatten(scene);
     stats.buildSeconds = secondsSince(buildStart);
     if (!flat.unsupported.empty()) {
         std::string list;
@@ -91,8 +91,10 @@ int runHeadlessRender(const CommandLine& options) {
                          why.empty() ? "" : "; CUDA not used: ", why.c_str());
         }
 
+        // What is needed of the arrays below is taken first: the backend may keep them instead of a copy.
+        const uint32_t cameraPasses = cameraPathPasses(flat.arrays, blocks);
         t0 = std::chrono::steady_clock::now();
-        backend->upload(flat.arrays);
+        backend->uploadMoved(std::move(flat.arrays));
         backend->resize(stats.width, stats.height);
         stats.uploadSeconds = secondsSince(t0);
 
@@ -111,7 +113,7 @@ int runHeadlessRender(const CommandLine& options) {
         // cameraPathPasses); bounded only by the time or the target error when either is given.
         const bool openEnded = options.seconds > 0 || options.targetError > 0;
         limits.passes = options.spp ? *options.spp
-                                    : (openEnded ? kMaxProgressivePasses : cameraPathPasses(flat.arrays, blocks));
+                                    : (openEnded ? kMaxProgressivePasses : cameraPasses);
         ProgressBar bar(!options.quiet, options.seconds);
         const RenderOutcome outcome =
             renderProgressive(*backend, frame, limits, [&](const RenderProgress& p) { bar.update(p); });

@@ -498,13 +498,17 @@ Bvh buildBvh(uint32_t n, const std::function<Aabb(uint32_t)>& boundsOf, const Bv
     for (uint32_t i = 0; i < schedule.size(); ++i) schedule[i] = i;
     std::stable_sort(schedule.begin(), schedule.end(),
                      [&](uint32_t a, uint32_t b) { return tasks[a].count() > tasks[b].count(); });
+    // Each subtree's nodes are reserved here, on the calling thread: memory a worker allocates stays in its
+    // own malloc arena, whose pages glibc keeps after they are freed.
     std::vector<std::vector<BvhNode>> subtrees(tasks.size());
+    for (size_t t = 0; t < tasks.size(); ++t) {
+        subtrees[t].reserve(2 * tasks[t].count());
+        subtrees[t].resize(1);
+    }
     std::atomic<size_t> next{0};
     auto worker = [&] {
         for (size_t k; (k = next.fetch_add(1)) < schedule.size();) {
             const uint32_t t = schedule[k];
-            subtrees[t].resize(1);
-            subtrees[t].reserve(2 * tasks[t].count());
             builder.buildSubtree(subtrees[t], 0, tasks[t]);
         }
     };

@@ -21,6 +21,10 @@ public:
 
     // Copies the flattened scene into backend memory (replacing any previous one).
     virtual void upload(const SceneArrays& arrays) = 0;
+    // The same for a caller that no longer needs the arrays: a backend that renders from host memory takes
+    // them over instead of copying (the CPU backend: a million-triangle mesh is 160 MB of arrays). `arrays`
+    // is left valid but unspecified.
+    virtual void uploadMoved(SceneArrays&& arrays) { upload(arrays); }
     // (Re)allocates the accumulation buffer for width × height and clears it.
     virtual void resize(uint32_t width, uint32_t height) = 0;
     // Clears the sums and counts (no reallocation).

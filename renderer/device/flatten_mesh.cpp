@@ -8,6 +8,10 @@
 #include <cmath>
 #include <thread>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include "accel/bvh_build.h"
 #include "accel/collapse_bvh.h"
 
@@ -205,6 +209,15 @@ uint32_t appendShape(const Bvh& bvh, uint32_t first, uint32_t count, bool hasUvs
     return (uint32_t)out.meshes.size() - 1;
 }
 
+// Hands the pages of freed heap blocks back to the system. glibc raises its mmap threshold as large
+// blocks are freed (up to 32 MB), so the builder's temporaries of a large mesh end up in the heap, where
+// free() keeps their pages resident; the triangles and corners written next would be counted on top.
+void releaseFreedHeap() {
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
+}
+
 }  // namespace
 
 PreparedMesh prepareMesh(const MeshData& data, const Affine3& worldFromObject) {
@@ -256,6 +269,7 @@ uint32_t appendMesh(const MeshData& data, const Affine3& worldFromObject, SceneA
         index = appendShape(bvh, (uint32_t)first, count, data.hasUvs, out);
         order = std::move(bvh.primitiveOrder);
     }
+    releaseFreedHeap();
     out.triangles.resize(first + count);
     out.triangleCorners.resize(first + count);
     parallelChunks(count, [&](size_t b, size_t e) {

@@ -279,12 +279,14 @@ std::shared_ptr<const MeshData> readObjText(const std::string& text, const std::
     // The check and the parse read the same text independently; on a large file they share the cores.
     MeshBuilder builder;
     bool parsed = false;
-    bool checked;
+    bool checked = false;
     if (text.size() >= (1u << 20) && std::thread::hardware_concurrency() > 1) {
+        // The mesh is built on this thread: what a worker allocates stays in its own malloc arena, whose
+        // pages glibc keeps after they are freed (the vectors' growth would leave megabytes resident).
         Diagnostics checkDiags;
-        std::thread parser([&] { parsed = parseWithTinyObj(text, builder); });
-        checked = checkObjText(text, pathForMessages, checkDiags);
-        parser.join();
+        std::thread checker([&] { checked = checkObjText(text, pathForMessages, checkDiags); });
+        parsed = parseWithTinyObj(text, builder);
+        checker.join();
         for (Diagnostic& d : checkDiags.items) diags.items.push_back(std::move(d));
     } else {
         checked = checkObjText(text, pathForMessages, diags);

@@ -56,6 +56,10 @@ public:
         arrays_ = arrays;
         view_ = hostView(arrays_);
     }
+    void uploadMoved(SceneArrays&& arrays) override {
+        arrays_ = std::move(arrays);
+        view_ = hostView(arrays_);
+    }
     void resize(uint32_t width, uint32_t height) override {
         width_ = width;
         height_ = height;
