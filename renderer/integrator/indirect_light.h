@@ -37,7 +37,7 @@ TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, cons
         if (!intersectScene(scene, ray, INFINITY, hit) || hit.object == kNoObject) continue;  // sky or a light
         const ObjectRef& o = scene.objects[hit.object];
         MaterialData mq = scene.materials[o.material];
-        SurfacePoint sq = surfaceAt(scene, o, hit, pointAt(ray, hit.t));
+        SurfacePoint sq = surfaceAt(scene, o, hit, pointAt(ray, hit.t), materialHasTextures(mq));
         applyTextures(scene, mq, sq);
         const ShadingPoint spq = facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), w, sq);
         const Vec3 arriving = directLight<F>(scene, spq, mq, atQ, blocks.lightAtIndirect, j, rng, rays) + mq.emissive;

@@ -79,7 +79,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         const Vec3 d = r.ray.direction;
         const Vec3 p = pointAt(r.ray, hit.t);
         const Vec3 pError = hitPointError(r.ray, hit.t);
-        SurfacePoint surface = surfaceAt(scene, object, hit, p);
+        SurfacePoint surface = surfaceAt(scene, object, hit, p, materialHasTextures(m));
         applyTextures(scene, m, surface);
         const bool frontFacing = dot(d, surface.ng) < 0.0f;
 

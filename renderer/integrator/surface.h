@@ -19,14 +19,14 @@ struct SurfacePoint {
 
 // Mesh hits: normal, uv and tangent interpolated from the corners. The geometric normal is turned to the
 // side of the shading normal, so the file's normals (not its winding) say which side is outside.
-TRAZO_HD SurfacePoint meshSurfaceAt(const SceneView& scene, const ObjectRef& o, const SurfaceHit& hit) {
+TRAZO_HD SurfacePoint meshSurfaceAt(const SceneView& scene, const ObjectRef& o, const SurfaceHit& hit, bool wantUv) {
     const MeshCorner* c = scene.triangleCorners[hit.triangle].corner;
     const float b0 = 1.0f - hit.b1 - hit.b2;
     SurfacePoint s{hit.normal, hit.normal, false, 0.0f, 0.0f, Vec3(0.0f), Vec3(0.0f)};
     const Vec3 n = c[0].normal * b0 + c[1].normal * hit.b1 + c[2].normal * hit.b2;
     if (dot(n, n) > 0.0f) s.n = normalize(n);
     if (dot(s.n, s.ng) < 0.0f) s.ng = -s.ng;
-    if (scene.meshes[o.index].hasUvs) {
+    if (wantUv && scene.meshes[o.index].hasUvs) {
         s.hasUv = true;
         s.u = c[0].u * b0 + c[1].u * hit.b1 + c[2].u * hit.b2;
         s.v = c[0].v * b0 + c[1].v * hit.b1 + c[2].v * hit.b2;
@@ -36,9 +36,17 @@ TRAZO_HD SurfacePoint meshSurfaceAt(const SceneView& scene, const ObjectRef& o, 
     return s;
 }
 
-TRAZO_HD SurfacePoint surfaceAt(const SceneView& scene, const ObjectRef& o, const SurfaceHit& hit, Vec3 p) {
-    if (o.kind == ObjectKind::Mesh) return meshSurfaceAt(scene, o, hit);
+// Whether any of the material's textures needs texture coordinates.
+TRAZO_HD bool materialHasTextures(const MaterialData& m) {
+    return m.diffuseTexture >= 0 || m.specularTexture >= 0 || m.emissiveTexture >= 0 || m.normalTexture >= 0;
+}
+
+// wantUv: the material has textures (materialHasTextures); without, the uv and tangent frame (an atan2 and an
+// acos on a sphere) are skipped: applyTextures would not read them.
+TRAZO_HD SurfacePoint surfaceAt(const SceneView& scene, const ObjectRef& o, const SurfaceHit& hit, Vec3 p, bool wantUv) {
+    if (o.kind == ObjectKind::Mesh) return meshSurfaceAt(scene, o, hit, wantUv);
     SurfacePoint s{hit.normal, hit.normal, false, 0.0f, 0.0f, Vec3(0.0f), Vec3(0.0f)};
+    if (!wantUv) return s;
     SurfaceFrame f{};
     switch (o.kind) {
         case ObjectKind::Sphere: f = sphereFrame(scene.spheres[o.index], p); break;
