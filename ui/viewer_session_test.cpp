@@ -163,6 +163,21 @@ TEST(ViewerSessionTest, BatchesRunOnTheWorkerAndErrorsReachTheCaller) {
     EXPECT_THROW(broken.waitIdle(), std::runtime_error);
 }
 
+// What `trazo --render` makes of the scene at this size, seed, blocks and pass count (halves and windows as
+// the CLI splits them).
+std::vector<Vec3> headlessImage(const Scene& scene, uint32_t width, uint32_t height, uint32_t seed,
+                                const StrataBlocks& blocks, uint32_t passes) {
+    std::unique_ptr<Backend> headless = createCpuBackend(2);
+    const FlattenResult flat = flatten(scene);
+    headless->upload(flat.arrays);
+    headless->resize(width, height);
+    RenderLimits limits;
+    limits.passes = passes;
+    limits.cyclePasses = fullCyclePasses(flat.arrays, blocks);
+    renderProgressive(*headless, makeFrameParams(scene, width, height, seed, blocks), limits);
+    return readImage(*headless);
+}
+
 // The viewer's passes, in any batching, accumulate exactly what the headless render does.
 TEST(ViewerSessionTest, BatchedPassesEqualTheHeadlessRender) {
     const Scene scene = readScene("scenes/scene1_area.scene");
@@ -171,15 +186,7 @@ TEST(ViewerSessionTest, BatchedPassesEqualTheHeadlessRender) {
     ASSERT_EQ(session.passes(), 11u);
     const std::vector<Vec3> viewer = session.image();
 
-    std::unique_ptr<Backend> headless = createCpuBackend(1);
-    const FlattenResult flat = flatten(scene);
-    headless->upload(flat.arrays);
-    headless->resize(24, 16);
-    RenderLimits limits;
-    limits.passes = 11;
-    limits.cyclePasses = fullCyclePasses(flat.arrays, StrataBlocks::ones());
-    renderProgressive(*headless, makeFrameParams(scene, 24, 16, 7), limits);
-    const std::vector<Vec3> reference = readImage(*headless);
+    const std::vector<Vec3> reference = headlessImage(scene, 24, 16, 7, StrataBlocks::ones(), 11);
     ASSERT_EQ(viewer.size(), reference.size());
     EXPECT_EQ(std::memcmp(viewer.data(), reference.data(), viewer.size() * sizeof(Vec3)), 0);
 }
@@ -207,14 +214,7 @@ TEST(ViewerSessionTest, BlocksGrowAtCycleBoundariesAndKeepTheEstimate) {
     EXPECT_EQ(session.samples(), 800.0);
     const std::vector<Vec3> image = session.image();
 
-    std::unique_ptr<Backend> headless = createCpuBackend(2);
-    const FlattenResult flat = flatten(scene);
-    headless->upload(flat.arrays);
-    headless->resize(24, 16);
-    RenderLimits limits;
-    limits.passes = 16;
-    renderProgressive(*headless, makeFrameParams(scene, 24, 16, 99, StrataBlocks::whole()), limits);
-    const std::vector<Vec3> reference = readImage(*headless);
+    const std::vector<Vec3> reference = headlessImage(scene, 24, 16, 99, StrataBlocks::whole(), 16);
     double mean = 0, sq = 0;
     for (size_t i = 0; i < image.size(); ++i) mean += (image[i].x - reference[i].x) / image.size();
     for (size_t i = 0; i < image.size(); ++i) sq += std::pow(image[i].x - reference[i].x - mean, 2);
