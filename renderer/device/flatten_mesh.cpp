@@ -112,16 +112,28 @@ public:
 
         // Smooth normals per position for corners without one: face normals weighted by the corner's angle
         // (summed in triangle order, as every corner of a position is).
+        // Each thread owns a range of positions and walks every triangle, adding only to its own: every
+        // sum is taken in the same order whatever the thread count.
         if (!data.hasNormals) {
             computedNormals_.assign(positions_.size(), Vec3(0.0f));
-            for (size_t t = 0; t < triangleCount; ++t) {
-                const MeshTriangle tri = triangle(t);
-                const Vec3 face = normalizeOr(cross(tri.p1 - tri.p0, tri.p2 - tri.p0), Vec3(0.0f));
-                const Vec3 p[3] = {tri.p0, tri.p1, tri.p2};
-                for (int k = 0; k < 3; ++k)
-                    computedNormals_[data.corners[3 * t + k].position] +=
-                        face * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
-            }
+            const size_t positionCount = positions_.size();
+            auto accumulate = [&](size_t ownedBegin, size_t ownedEnd) {
+                for (size_t t = 0; t < triangleCount; ++t) {
+                    const MeshData::Corner* c = &data.corners[3 * t];
+                    const bool mine[3] = {(size_t)c[0].position - ownedBegin < ownedEnd - ownedBegin,
+                                          (size_t)c[1].position - ownedBegin < ownedEnd - ownedBegin,
+                                          (size_t)c[2].position - ownedBegin < ownedEnd - ownedBegin};
+                    if (!mine[0] && !mine[1] && !mine[2]) continue;
+                    const MeshTriangle tri = triangle(t);
+                    const Vec3 face = normalizeOr(cross(tri.p1 - tri.p0, tri.p2 - tri.p0), Vec3(0.0f));
+                    const Vec3 p[3] = {tri.p0, tri.p1, tri.p2};
+                    for (int k = 0; k < 3; ++k)
+                        if (mine[k])
+                            computedNormals_[c[k].position] += face * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+                }
+            };
+            if (triangleCount >= 65536) parallelChunks(positionCount, accumulate);  // every thread walks them all
+            else accumulate(0, positionCount);
         }
 
         // Lengyel's tangents, summed over the triangles sharing a corner's (position, normal, uv). Without

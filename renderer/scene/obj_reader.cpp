@@ -5,12 +5,14 @@
 // index is range-checked again against what tinyobjloader read.
 #include "scene/obj_reader.h"
 
+#include <sys/mman.h>
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <istream>
+#include <new>
 #include <streambuf>
 #include <string_view>
 #include <thread>
@@ -204,10 +206,35 @@ public:
     size_t offset() const { return (size_t)(gptr() - eback()); }  // how far tinyobjloader has read
 };
 
-// MeshData from tinyobjloader's callbacks: positions, normals and uvs as they come, each face fanned into
+// Vector storage straight from mmap, for what a worker thread builds: glibc keeps the pages of what a
+// worker allocates in its own arena after they are freed, and these are tens of MB.
+template <class T>
+struct PageAllocator {
+    using value_type = T;
+    PageAllocator() = default;
+    template <class U>
+    PageAllocator(const PageAllocator<U>&) {}
+    T* allocate(size_t n) {
+        void* p = ::mmap(nullptr, n * sizeof(T), PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (p == MAP_FAILED) throw std::bad_alloc();
+        return static_cast<T*>(p);
+    }
+    void deallocate(T* p, size_t n) { ::munmap(p, n * sizeof(T)); }
+    bool operator==(const PageAllocator&) const { return true; }
+    bool operator!=(const PageAllocator&) const { return false; }
+};
+
+// Mesh data from tinyobjloader's callbacks: positions, normals and uvs as they come, each face fanned into
 // corners with its indices resolved (1-based, or negative: relative to what was read before the line).
+// A builder for a later part of the file (relativeToEarlier) does not know how much came before it: its
+// negative indices are left relative to its own start, to be offset when the parts are joined (fixups).
+template <template <class> class Alloc>
 struct MeshBuilder {
-    MeshData mesh;
+    std::vector<Vec3, Alloc<Vec3>> positions, normals;
+    std::vector<float, Alloc<float>> uvs;
+    std::vector<MeshData::Corner, Alloc<MeshData::Corner>> corners;
+    std::vector<uint32_t, Alloc<uint32_t>> fixups;  // 3 · corner + component (0 position, 1 normal, 2 uv)
+    bool relativeToEarlier = false;
     bool allNormals = true, allUvs = true;
     // The first face with an index the check did not see as tinyobjloader does (text after a face's
     // vertices, which tinyobjloader reads as index 0; a lone \r line break): where the reading stood then.
@@ -215,60 +242,114 @@ struct MeshBuilder {
     size_t badOffset = 0;
     const TextStreambuf* stream = nullptr;
     std::vector<MeshData::Corner> face;
+    std::vector<uint8_t> faceRelative;  // per face corner: bit c = component c is relative to the part's start
 
-    static int32_t resolve(int raw, size_t count) {
-        if (raw > 0) return (int32_t)(raw - 1);
-        if (raw < 0 && (size_t)(-(int64_t)raw) <= count) return (int32_t)((int64_t)count + raw);
-        return -1;
+    // Resolves one index; false when it is 0 (absent or unreadable) or reaches before the file's start.
+    bool resolve(int raw, size_t count, int32_t& out, bool& relative) const {
+        relative = raw < 0 && relativeToEarlier;  // offset by what came before this part, at the join
+        if (raw > 0) {
+            out = (int32_t)(raw - 1);
+            return true;
+        }
+        if (raw == 0) {
+            out = -1;
+            return false;
+        }
+        out = (int32_t)((int64_t)count + raw);
+        return relativeToEarlier || out >= 0;
     }
     static void vertex(void* self, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z, tinyobj::real_t) {
-        static_cast<MeshBuilder*>(self)->mesh.positions.push_back({x, y, z});
+        static_cast<MeshBuilder*>(self)->positions.push_back({x, y, z});
     }
     static void normal(void* self, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z) {
-        static_cast<MeshBuilder*>(self)->mesh.normals.push_back({x, y, z});
+        static_cast<MeshBuilder*>(self)->normals.push_back({x, y, z});
     }
     static void texcoord(void* self, tinyobj::real_t u, tinyobj::real_t v, tinyobj::real_t) {
-        std::vector<float>& uvs = static_cast<MeshBuilder*>(self)->mesh.uvs;
-        uvs.push_back(u);
-        uvs.push_back(v);
+        MeshBuilder& b = *static_cast<MeshBuilder*>(self);
+        b.uvs.push_back(u);
+        b.uvs.push_back(v);
     }
     static void indices(void* selfIn, tinyobj::index_t* index, int count) {
         MeshBuilder& self = *static_cast<MeshBuilder*>(selfIn);
-        MeshData& m = self.mesh;
         self.face.resize((size_t)count);
+        self.faceRelative.assign((size_t)count, 0);
         for (int k = 0; k < count; ++k) {
             MeshData::Corner& c = self.face[(size_t)k];
-            c.position = resolve(index[k].vertex_index, m.positions.size());
-            c.normal = index[k].normal_index == 0 ? -1 : resolve(index[k].normal_index, m.normals.size());
-            c.uv = index[k].texcoord_index == 0 ? -1 : resolve(index[k].texcoord_index, m.uvs.size() / 2);
-            if ((c.position < 0 || (index[k].normal_index != 0 && c.normal < 0) ||
-                 (index[k].texcoord_index != 0 && c.uv < 0)) && !self.badIndex) {
+            bool ok = true, relative = false;
+            ok = self.resolve(index[k].vertex_index, self.positions.size(), c.position, relative) && ok;
+            uint8_t mask = relative ? 1 : 0;
+            c.normal = -1;
+            c.uv = -1;
+            if (index[k].normal_index != 0) {
+                ok = self.resolve(index[k].normal_index, self.normals.size(), c.normal, relative) && ok;
+                mask |= relative ? 2 : 0;
+            }
+            if (index[k].texcoord_index != 0) {
+                ok = self.resolve(index[k].texcoord_index, self.uvs.size() / 2, c.uv, relative) && ok;
+                mask |= relative ? 4 : 0;
+            }
+            self.faceRelative[(size_t)k] = mask;
+            if (!ok && !self.badIndex) {
                 self.badIndex = true;
                 self.badOffset = self.stream ? self.stream->offset() : 0;
             }
-            self.allNormals = self.allNormals && c.normal >= 0;
-            self.allUvs = self.allUvs && c.uv >= 0;
+            self.allNormals = self.allNormals && index[k].normal_index != 0;
+            self.allUvs = self.allUvs && index[k].texcoord_index != 0;
         }
-        for (int k = 1; k + 1 < count; ++k) {  // fan around the polygon's first corner
-            m.corners.push_back(self.face[0]);
-            m.corners.push_back(self.face[(size_t)k]);
-            m.corners.push_back(self.face[(size_t)k + 1]);
+        auto push = [&self](size_t k) {
+            const uint32_t corner = (uint32_t)self.corners.size();
+            self.corners.push_back(self.face[k]);
+            for (uint32_t component = 0; component < 3; ++component)
+                if (self.faceRelative[k] & (1u << component)) self.fixups.push_back(3 * corner + component);
+        };
+        for (size_t k = 1; k + 1 < (size_t)count; ++k) {  // fan around the polygon's first corner
+            push(0);
+            push(k);
+            push(k + 1);
         }
     }
 };
 
-bool parseWithTinyObj(const std::string& text, MeshBuilder& builder) {
+template <class Builder>
+bool parseWithTinyObj(std::string_view text, Builder& builder) {
     TextStreambuf buffer(text);
     builder.stream = &buffer;
     std::istream in(&buffer);
     tinyobj::callback_t callbacks;
-    callbacks.vertex_cb = MeshBuilder::vertex;
-    callbacks.normal_cb = MeshBuilder::normal;
-    callbacks.texcoord_cb = MeshBuilder::texcoord;
-    callbacks.index_cb = MeshBuilder::indices;
+    callbacks.vertex_cb = Builder::vertex;
+    callbacks.normal_cb = Builder::normal;
+    callbacks.texcoord_cb = Builder::texcoord;
+    callbacks.index_cb = Builder::indices;
     std::string warnings, errors;
     const bool ok = tinyobj::LoadObjWithCallback(in, callbacks, &builder, nullptr, &warnings, &errors);
     builder.stream = nullptr;
+    return ok;
+}
+
+// Appends a later part's data to the first's, offsetting its relative indices by what came before; false
+// when one of them reaches before the file's start.
+bool joinParts(MeshBuilder<std::allocator>& first, const MeshBuilder<PageAllocator>& later, size_t laterOffset) {
+    const int64_t before[3] = {(int64_t)first.positions.size(), (int64_t)first.normals.size(),
+                               (int64_t)first.uvs.size() / 2};
+    const size_t cornerBase = first.corners.size();
+    first.positions.insert(first.positions.end(), later.positions.begin(), later.positions.end());
+    first.normals.insert(first.normals.end(), later.normals.begin(), later.normals.end());
+    first.uvs.insert(first.uvs.end(), later.uvs.begin(), later.uvs.end());
+    first.corners.insert(first.corners.end(), later.corners.begin(), later.corners.end());
+    first.allNormals = first.allNormals && later.allNormals;
+    first.allUvs = first.allUvs && later.allUvs;
+    if (!first.badIndex && later.badIndex) {
+        first.badIndex = true;
+        first.badOffset = laterOffset + later.badOffset;
+    }
+    bool ok = true;
+    for (uint32_t f : later.fixups) {
+        MeshData::Corner& c = first.corners[cornerBase + f / 3];
+        int32_t& index = f % 3 == 0 ? c.position : (f % 3 == 1 ? c.normal : c.uv);
+        const int64_t global = (int64_t)index + before[f % 3];
+        ok = ok && global >= 0;
+        index = (int32_t)global;
+    }
     return ok;
 }
 
@@ -276,24 +357,37 @@ bool parseWithTinyObj(const std::string& text, MeshBuilder& builder) {
 
 std::shared_ptr<const MeshData> readObjText(const std::string& text, const std::string& pathForMessages,
                                             Diagnostics& diags) {
-    // The check and the parse read the same text independently; on a large file they share the cores.
-    MeshBuilder builder;
-    bool parsed = false;
-    bool checked = false;
-    if (text.size() >= (1u << 20) && std::thread::hardware_concurrency() > 1) {
-        // The mesh is built on this thread: what a worker allocates stays in its own malloc arena, whose
-        // pages glibc keeps after they are freed (the vectors' growth would leave megabytes resident).
+    // The check and the parse read the same text independently. On a large file, a worker thread checks
+    // the whole text and then parses its last third while this thread parses the rest (the parse takes
+    // about three times the check); the parts are cut at a line break.
+    MeshBuilder<std::allocator> builder;
+    bool parsed = false, checked = false, joined = true;
+    const size_t cut = text.size() >= (1u << 20) && std::thread::hardware_concurrency() > 1
+                           ? text.find('\n', text.size() / 3 * 2)
+                           : std::string::npos;
+    if (cut != std::string::npos && cut + 1 < text.size()) {
+        const size_t laterStart = cut + 1;
         Diagnostics checkDiags;
-        std::thread checker([&] { checked = checkObjText(text, pathForMessages, checkDiags); });
-        parsed = parseWithTinyObj(text, builder);
-        checker.join();
+        MeshBuilder<PageAllocator> later;
+        later.relativeToEarlier = true;
+        bool laterParsed = false;
+        std::thread worker([&] {
+            checked = checkObjText(text, pathForMessages, checkDiags);
+            if (checked) laterParsed = parseWithTinyObj(std::string_view(text).substr(laterStart), later);
+        });
+        // The mesh is built on this thread: what a worker allocates from malloc stays in its own arena.
+        parsed = parseWithTinyObj(std::string_view(text).substr(0, laterStart), builder);
+        worker.join();
         for (Diagnostic& d : checkDiags.items) diags.items.push_back(std::move(d));
+        if (checked) {
+            parsed = parsed && laterParsed;
+            joined = joinParts(builder, later, laterStart);
+        }
     } else {
         checked = checkObjText(text, pathForMessages, diags);
         if (checked) parsed = parseWithTinyObj(text, builder);
     }
     if (!checked) return nullptr;
-    MeshData& mesh = builder.mesh;
     if (!parsed) {
         diags.error({pathForMessages, 0, 0}, "malformed OBJ file");
         return nullptr;
@@ -306,30 +400,39 @@ std::shared_ptr<const MeshData> readObjText(const std::string& text, const std::
                                                 "(text after the face's vertices, such as a # comment?)");
         return nullptr;
     }
-    // Every index within what tinyobjloader itself read (what the resolution above checked already for
-    // relative ones; positive ones may point forward).
-    for (const MeshData::Corner& c : mesh.corners) {
-        if ((size_t)c.position >= mesh.positions.size() || (c.normal >= 0 && (size_t)c.normal >= mesh.normals.size()) ||
-            (c.uv >= 0 && (size_t)c.uv >= mesh.uvs.size() / 2)) {
-            diags.error({pathForMessages, 0, 0}, "malformed OBJ file: a face index is out of range as tinyobjloader "
-                                                 "reads the lines (line breaks other than \\n or \\r\\n?)");
-            return nullptr;
-        }
+    auto mesh = std::make_shared<MeshData>();
+    mesh->positions = std::move(builder.positions);
+    mesh->normals = std::move(builder.normals);
+    mesh->uvs = std::move(builder.uvs);
+    mesh->corners = std::move(builder.corners);
+    // Every index within what tinyobjloader itself read (negative ones were checked as they were resolved,
+    // or at the join; positive ones may point forward).
+    bool inRange = joined;
+    for (const MeshData::Corner& c : mesh->corners) {
+        if (!inRange) break;
+        inRange = c.position >= 0 && (size_t)c.position < mesh->positions.size() &&
+                  (c.normal < 0 || (size_t)c.normal < mesh->normals.size()) &&
+                  (c.uv < 0 || (size_t)c.uv < mesh->uvs.size() / 2);
     }
-    if (mesh.corners.empty()) {
+    if (!inRange) {
+        diags.error({pathForMessages, 0, 0}, "malformed OBJ file: a face index is out of range as tinyobjloader "
+                                             "reads the lines (line breaks other than \\n or \\r\\n?)");
+        return nullptr;
+    }
+    if (mesh->corners.empty()) {
         diags.error({pathForMessages, 0, 0}, "OBJ file has no faces");
         return nullptr;
     }
-    mesh.hasNormals = builder.allNormals;
-    mesh.hasUvs = builder.allUvs;
+    mesh->hasNormals = builder.allNormals;
+    mesh->hasUvs = builder.allUvs;
     // A partial attribute is treated as absent, so that consumers need only the two flags.
-    if (!mesh.hasNormals || !mesh.hasUvs) {
-        for (MeshData::Corner& c : mesh.corners) {
-            if (!mesh.hasNormals) c.normal = -1;
-            if (!mesh.hasUvs) c.uv = -1;
+    if (!mesh->hasNormals || !mesh->hasUvs) {
+        for (MeshData::Corner& c : mesh->corners) {
+            if (!mesh->hasNormals) c.normal = -1;
+            if (!mesh->hasUvs) c.uv = -1;
         }
     }
-    return std::make_shared<MeshData>(std::move(mesh));
+    return mesh;
 }
 
 std::shared_ptr<const MeshData> readObjFile(const std::string& path, Diagnostics& diags) {
