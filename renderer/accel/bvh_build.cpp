@@ -55,8 +55,9 @@ struct BinMapping {
 
 // Only the first `binCount` bins are used and initialised: a node's bins are set up half a million times.
 // (Plain floats: Vec3 and Aabb initialise their members, which would touch all kMaxBvhBins.)
-struct BinBox {
-    float lo[3], hi[3];
+// Lane 3 of lo and hi is padding (kept 0), so that a box is one aligned four-lane load.
+struct alignas(16) BinBox {
+    float lo[4], hi[4];
     void grow(Vec3 bMin, Vec3 bMax) {
         for (int a = 0; a < 3; ++a) {
             lo[a] = fastMin(lo[a], bMin[a]);
@@ -76,7 +77,7 @@ struct BinSet {
     explicit BinSet(uint32_t binCount) {
         for (int a = 0; a < 3; ++a)
             for (uint32_t b = 0; b < binCount; ++b) {
-                bounds[a][b] = BinBox{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+                bounds[a][b] = BinBox{{INFINITY, INFINITY, INFINITY, 0.0f}, {-INFINITY, -INFINITY, -INFINITY, 0.0f}};
                 counts[a][b] = 0;
             }
     }
@@ -86,12 +87,6 @@ struct BinSet {
 // The same arithmetic as BinMapping::binOf in four lanes (maxps returns 0 for NaN as binOf does), with
 // bin boxes grown by one minps/maxps: binning dominates the build.
 void binPrimitives(const PrimRef* refs, uint32_t count, const BinMapping& m, BinSet& bins) {
-    alignas(16) __m128 lo[3][kMaxBvhBins], hi[3][kMaxBvhBins];
-    for (int a = 0; a < 3; ++a)
-        for (uint32_t b = 0; b < m.binCount; ++b) {
-            lo[a][b] = _mm_setr_ps(bins.bounds[a][b].lo[0], bins.bounds[a][b].lo[1], bins.bounds[a][b].lo[2], 0.0f);
-            hi[a][b] = _mm_setr_ps(bins.bounds[a][b].hi[0], bins.bounds[a][b].hi[1], bins.bounds[a][b].hi[2], 0.0f);
-        }
     const __m128 origin = _mm_setr_ps(m.origin.x, m.origin.y, m.origin.z, 0.0f);
     const __m128 scale = _mm_setr_ps(m.scale.x, m.scale.y, m.scale.z, 0.0f);
     const __m128 half = _mm_set1_ps(0.5f), zero = _mm_setzero_ps(), last = _mm_set1_ps((float)(m.binCount - 1));
@@ -103,18 +98,12 @@ void binPrimitives(const PrimRef* refs, uint32_t count, const BinMapping& m, Bin
         alignas(16) int32_t bin[4];
         _mm_store_si128((__m128i*)bin, _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(f, zero), last)));
         for (int a = 0; a < 3; ++a) {
-            lo[a][bin[a]] = _mm_min_ps(lo[a][bin[a]], bMin);
-            hi[a][bin[a]] = _mm_max_ps(hi[a][bin[a]], bMax);
+            BinBox& box = bins.bounds[a][bin[a]];
+            _mm_store_ps(box.lo, _mm_min_ps(_mm_load_ps(box.lo), bMin));
+            _mm_store_ps(box.hi, _mm_max_ps(_mm_load_ps(box.hi), bMax));
             ++bins.counts[a][bin[a]];
         }
     }
-    for (int a = 0; a < 3; ++a)
-        for (uint32_t b = 0; b < m.binCount; ++b) {
-            alignas(16) float l[4], h[4];
-            _mm_store_ps(l, lo[a][b]);
-            _mm_store_ps(h, hi[a][b]);
-            bins.bounds[a][b] = BinBox{{l[0], l[1], l[2]}, {h[0], h[1], h[2]}};
-        }
 }
 #else
 void binPrimitives(const PrimRef* refs, uint32_t count, const BinMapping& m, BinSet& bins) {
@@ -292,6 +281,39 @@ private:
                 if (m.scale[a] == 0.0f) continue;
                 float rightArea[kMaxBvhBins];
                 uint32_t rightCount[kMaxBvhBins];
+#if defined(__SSE2__)
+                // growBox and Aabb::surfaceArea in four lanes, the same operations in the same order.
+                auto area = [](__m128 lo, __m128 hi) {
+                    if (_mm_movemask_ps(_mm_cmpgt_ps(lo, hi)) & 7) return 0.0f;  // empty
+                    const __m128 e = _mm_sub_ps(hi, lo);
+                    alignas(16) float p[4];  // (ex·ey, ey·ez, ez·ex, ·)
+                    _mm_store_ps(p, _mm_mul_ps(e, _mm_shuffle_ps(e, e, _MM_SHUFFLE(3, 0, 2, 1))));
+                    return 2.0f * (p[0] + p[1] + p[2]);
+                };
+                __m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY);
+                uint32_t c = 0;
+                for (uint32_t b = k - 1; b > 0; --b) {
+                    lo = _mm_min_ps(lo, _mm_load_ps(bins.bounds[a][b].lo));
+                    hi = _mm_max_ps(hi, _mm_load_ps(bins.bounds[a][b].hi));
+                    c += bins.counts[a][b];
+                    rightArea[b] = area(lo, hi);
+                    rightCount[b] = c;
+                }
+                lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY);
+                c = 0;
+                for (uint32_t b = 1; b < k; ++b) {
+                    lo = _mm_min_ps(lo, _mm_load_ps(bins.bounds[a][b - 1].lo));
+                    hi = _mm_max_ps(hi, _mm_load_ps(bins.bounds[a][b - 1].hi));
+                    c += bins.counts[a][b - 1];
+                    if (c == 0 || rightCount[b] == 0) continue;
+                    const float cost = area(lo, hi) * (float)c + rightArea[b] * (float)rightCount[b];
+                    if (cost < bestCost) {
+                        bestCost = cost;
+                        best = Split{SplitKind::Sah, a, (int)b};
+                        bestLeft = c;
+                    }
+                }
+#else
                 Aabb box;
                 uint32_t c = 0;
                 for (uint32_t b = k - 1; b > 0; --b) {
@@ -313,6 +335,7 @@ private:
                         bestLeft = c;
                     }
                 }
+#endif
             }
         }
         const bool haveSah = best.kind == SplitKind::Sah;
