@@ -33,10 +33,10 @@ struct FrameParams {
     }
 };
 
-// Accumulation per pixel: float RGB sums of weighted samples and the sum of their weights (FrameParams::
-// sampleWeight; 1 for every sample of a headless render, so `count` is then the sample count). `sum`/`count`
-// hold every sample (the image is sum / count); `sumB`/`countB` hold the samples of second-half passes only, so the first half
-// is (sum - sumB, count - countB). Two half estimates of the same pixel give its error (error_estimate.h).
+// Accumulation per pixel: float RGB sums of weighted samples and the sum of their weights
+// (FrameParams::sampleWeight; 1 for every sample of a headless render, so `count` is then the sample count).
+// `sum`/`count` hold every sample (the image is sum / count); `sumB`/`countB` hold the samples of second-half
+// passes only, so the first half is (sum - sumB, count - countB). Two half estimates of the same pixel give its error (error_estimate.h).
 struct AccumPixel {
     Vec3 sum;
     float count;

@@ -1,7 +1,7 @@
 // Indirect(P) of SPEC §5: one bounce of diffuse inter-reflection. Directions about the shading normal with
-// θ uniform in [0, π/2) and φ uniform in [0, 2π), stratified q θ-bins × 2q φ-bins; a pass takes a block of jittered
-// strata (strata.h). What a direction finds at Q is Q's direct light plus its
-// emission, carried back through P's Oren–Nayar term: Kd·ON(N, ω, V, σ) ⊙ (Direct(Q) + Ke(Q)).
+// θ uniform in [0, π/2) and φ uniform in [0, 2π), stratified q θ-bins × 2q φ-bins; a pass takes a block of
+// jittered strata (strata.h). What a direction finds at Q is Q's direct light plus its emission, carried back
+// through P's Oren–Nayar term: Kd·ON(N, ω, V, σ) ⊙ (Direct(Q) + Ke(Q)).
 #pragma once
 
 #include "integrator/direct_light.h"
@@ -22,7 +22,7 @@ TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, cons
     const StrataBlock directions = strata.block(kGridIndirect, 2 * q * q, blocks.indirect);
     const StrataKey atQ = strata.child(kBranchIndirect);
 #if !defined(__CUDA_ARCH__)
-    const OrenNayarView view = orenNayarView(sp.n, sp.v, m.roughness);  // per direction on the device (PointBrdf)
+    const OrenNayarView view = orenNayarView(sp.n, sp.v, m.roughness);  // the device: per direction, as PointBrdf
 #endif
     Vec3 sum(0.0f);
     for (uint32_t j = 0; j < directions.size; ++j) {

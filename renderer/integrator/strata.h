@@ -2,10 +2,9 @@
 // cones) and which of their strata a pass evaluates. A pass takes one *block* of each grid at every hit it
 // reaches: a grid of N strata in blocks of b (b | N) has P = N/b blocks, and pass v evaluates block
 // σ(v mod P), σ a permutation drawn per pixel and per grid. Every P consecutive passes therefore visit every
-// stratum once, and the rays above a grid (the camera ray, the
-// reflected, refracted and indirect rays) are traced once per block instead of once per stratum — the
-// thesis's own nesting. Blocks of 1 are the plain progressive render; blocks covering every grid are the
-// thesis's estimator (--fixed-grid).
+// stratum once, and the rays above a grid (the camera ray, the reflected, refracted and indirect rays) are
+// traced once per block instead of once per stratum — the thesis's own nesting. Blocks of 1 are the plain
+// progressive render; blocks covering every grid are the thesis's estimator (--fixed-grid).
 #pragma once
 
 #include <cstdint>
