@@ -74,7 +74,9 @@ void ViewerSession::startSegment(const StrataBlocks& blocks) {
     const uint32_t seed = segment_ == 0 ? seed_ : hashCombine(seed_, segment_);
     frame_ = makeFrameParams(scene_, width_, height_, seed, blocks);
     segmentCycle_ = fullCyclePasses(flat_.arrays, blocks);
-    frame_.sampleWeight = float(cyclePasses_) / float(segmentCycle_);
+    // In passes of the first segment's blocks: 1 there, so a session that never grows accumulates exactly what
+    // `--render --blocks B` does.
+    frame_.sampleWeight = float(fullCyclePasses(flat_.arrays, firstBlocks_)) / float(segmentCycle_);
     segmentPasses_ = 0;
 }
 

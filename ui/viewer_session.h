@@ -6,8 +6,9 @@
 // Blocks of strata (integrator/strata.h) start at one stratum per pass, so the first image after an edit is as
 // fast as a pass can be. With growth on, whenever a cycle of the current blocks is complete and a pass at
 // twice the blocks would still fit the pass budget, the accumulation goes on in a new segment: blocks
-// doubled (up to the headless render's), a seed of its own, and samples weighted by the one-stratum passes
-// each stands for (FrameParams::sampleWeight). Every segment is whole cycles, an exact stratified estimate.
+// doubled (up to the headless render's), a seed of its own, and samples weighted by the first segment's
+// passes each stands for (FrameParams::sampleWeight). Every segment is whole cycles, an exact stratified
+// estimate.
 #pragma once
 
 #include <functional>
@@ -76,7 +77,8 @@ public:
     uint32_t width() const { return width_; }  // the accumulation's size (smaller during a preview)
     uint32_t height() const { return height_; }
     uint32_t passes() const { return passes_; }  // since the last reset
-    // Passes weighted by their samples' weights: passes of one stratum per grid they are worth.
+    // Passes weighted by their samples' weights: the passes of the first segment's blocks (one stratum per grid,
+    // unless setBlocks says otherwise) they are worth.
     double samples() const { return samples_; }
     double blocksWeight() const { return frame_.sampleWeight; }  // samples a pass of the current segment adds
     uint32_t cyclePasses() const { return cyclePasses_; }
