@@ -191,6 +191,20 @@ TEST(ViewerSessionTest, BatchedPassesEqualTheHeadlessRender) {
     EXPECT_EQ(std::memcmp(viewer.data(), reference.data(), viewer.size() * sizeof(Vec3)), 0);
 }
 
+// Fixed blocks other than one stratum (--blocks B, no growth) still accumulate exactly what --render does.
+TEST(ViewerSessionTest, FixedBlocksEqualTheHeadlessRender) {
+    const Scene scene = readScene("scenes/scene1_area.scene");
+    ViewerSession session(scene, createCpuBackend(2), 5, 24, 16);
+    const StrataBlocks blocks{1, 10, 1, 1};
+    session.setBlocks(blocks, 0.0);
+    for (uint32_t batch : {3u, 4u}) session.renderPasses(batch);
+    const std::vector<Vec3> viewer = session.image();
+    const std::vector<Vec3> reference = headlessImage(scene, 24, 16, 5, blocks, 7);
+    ASSERT_EQ(viewer.size(), reference.size());
+    EXPECT_EQ(std::memcmp(viewer.data(), reference.data(), viewer.size() * sizeof(Vec3)), 0);
+    EXPECT_EQ(session.samples(), 7.0);
+}
+
 // With growth on, blocks double at cycle boundaries up to the headless render's, each segment's samples
 // weighted by the one-stratum passes they stand for; the image stays an unbiased estimate: its mean
 // difference from a converged reference (another seed) is within 4 standard errors of 0.
