@@ -18,6 +18,12 @@ void destroyCudaGlDisplay(CudaGlDisplay* display);
 bool resolveIntoGlBuffer(CudaGlDisplay& display, unsigned glBuffer, const AccumPixel* accum, uint32_t width,
                          uint32_t height, std::string& why);
 
+// One launcher per specialised variant of the render-pass kernel, each compiled in its own translation unit
+// (render_pass_variants_*.cu) so a build compiles the variants on every core.
+template <FeatureMask F>
+void launchRenderPass(dim3 grid, dim3 block, const SceneView& scene, const FrameParams& frame, uint32_t pass,
+                      AccumPixel* accum, unsigned long long* rayCounter);
+
 namespace {
 
 // Throws with the failing call's file:line; Backend methods turn it into a runtime failure (exit 1).
@@ -29,31 +35,9 @@ namespace {
                                      #call + ": " + cudaGetErrorString(status_));                      \
     } while (0)
 
-template <FeatureMask F>
-__global__ void renderPassKernel(SceneView scene, FrameParams frame, uint32_t pass, AccumPixel* accum,
-                                 unsigned long long* rayCounter) {
-    const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
-    const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
-    uint32_t rays = 0;
-    if (x < frame.camera.width && y < frame.camera.height) {
-        const Vec3 c = renderSample<F>(scene, frame, x, y, pass, rays);
-        accum[(size_t)y * frame.camera.width + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
-    }
-    // One atomic per warp for the ray count.
-    for (int offset = 16; offset > 0; offset /= 2) rays += __shfl_down_sync(0xffffffffu, rays, offset);
-    if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0 && rays) atomicAdd(rayCounter, (unsigned long long)rays);
-}
-
 __global__ void rayQueryKernel(SceneView scene, const RayQuery* queries, uint32_t count, bool shadow, float* out) {
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i < count) out[i] = answerRayQuery(scene, queries[i], shadow);
-}
-
-// Host-side launchers, one per specialised variant, in the table both backends share.
-template <FeatureMask F>
-void launchRenderPass(dim3 grid, dim3 block, const SceneView& scene, const FrameParams& frame, uint32_t pass,
-                      AccumPixel* accum, unsigned long long* rayCounter) {
-    renderPassKernel<F><<<grid, block>>>(scene, frame, pass, accum, rayCounter);
 }
 
 template <FeatureMask F>

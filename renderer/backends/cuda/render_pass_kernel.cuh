@@ -1,0 +1,33 @@
+// The render-pass kernel (one thread per pixel, one launch per pass) and its host launcher, for the variant
+// translation units render_pass_variants_*.cu: each instantiates four of the 16 specialised variants.
+#pragma once
+
+#include <cuda_runtime.h>
+
+#include "integrator/sample_variants.h"
+
+namespace trazo {
+
+template <FeatureMask F>
+__global__ void renderPassKernel(SceneView scene, FrameParams frame, uint32_t pass, AccumPixel* accum,
+                                 unsigned long long* rayCounter) {
+    const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
+    const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
+    uint32_t rays = 0;
+    if (x < frame.camera.width && y < frame.camera.height) {
+        const Vec3 c = renderSample<F>(scene, frame, x, y, pass, rays);
+        accum[(size_t)y * frame.camera.width + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
+    }
+    // One atomic per warp for the ray count.
+    for (int offset = 16; offset > 0; offset /= 2) rays += __shfl_down_sync(0xffffffffu, rays, offset);
+    if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0 && rays) atomicAdd(rayCounter, (unsigned long long)rays);
+}
+
+// Host-side launchers, one per specialised variant, in the table both backends share.
+template <FeatureMask F>
+void launchRenderPass(dim3 grid, dim3 block, const SceneView& scene, const FrameParams& frame, uint32_t pass,
+                      AccumPixel* accum, unsigned long long* rayCounter) {
+    renderPassKernel<F><<<grid, block>>>(scene, frame, pass, accum, rayCounter);
+}
+
+}  // namespace trazo
