@@ -30,4 +30,9 @@ void launchRenderPass(dim3 grid, dim3 block, const SceneView& scene, const Frame
     renderPassKernel<F><<<grid, block>>>(scene, frame, pass, accum, rayCounter);
 }
 
+// Compiles variant I of the shared table (sample_variants.h) in the translation unit that says it.
+#define TRAZO_RENDER_PASS_VARIANT(I)                                                                      \
+    template void launchRenderPass<variantFeatures(I)>(dim3, dim3, const SceneView&, const FrameParams&, \
+                                                       uint32_t, AccumPixel*, unsigned long long*)
+
 }  // namespace trazo

@@ -3,13 +3,9 @@
 
 namespace trazo {
 
-template void launchRenderPass<variantFeatures(0)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                   AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(1)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                   AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(2)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                   AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(3)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                   AccumPixel*, unsigned long long*);
+TRAZO_RENDER_PASS_VARIANT(0);
+TRAZO_RENDER_PASS_VARIANT(1);
+TRAZO_RENDER_PASS_VARIANT(2);
+TRAZO_RENDER_PASS_VARIANT(3);
 
 }  // namespace trazo

@@ -3,13 +3,9 @@
 
 namespace trazo {
 
-template void launchRenderPass<variantFeatures(4)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                   AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(5)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                   AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(6)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                   AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(7)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                   AccumPixel*, unsigned long long*);
+TRAZO_RENDER_PASS_VARIANT(4);
+TRAZO_RENDER_PASS_VARIANT(5);
+TRAZO_RENDER_PASS_VARIANT(6);
+TRAZO_RENDER_PASS_VARIANT(7);
 
 }  // namespace trazo

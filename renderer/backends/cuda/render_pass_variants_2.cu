@@ -3,13 +3,9 @@
 
 namespace trazo {
 
-template void launchRenderPass<variantFeatures(8)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                   AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(9)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                   AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(10)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                    AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(11)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                    AccumPixel*, unsigned long long*);
+TRAZO_RENDER_PASS_VARIANT(8);
+TRAZO_RENDER_PASS_VARIANT(9);
+TRAZO_RENDER_PASS_VARIANT(10);
+TRAZO_RENDER_PASS_VARIANT(11);
 
 }  // namespace trazo

@@ -3,13 +3,9 @@
 
 namespace trazo {
 
-template void launchRenderPass<variantFeatures(12)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                    AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(13)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                    AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(14)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                    AccumPixel*, unsigned long long*);
-template void launchRenderPass<variantFeatures(15)>(dim3, dim3, const SceneView&, const FrameParams&, uint32_t,
-                                                    AccumPixel*, unsigned long long*);
+TRAZO_RENDER_PASS_VARIANT(12);
+TRAZO_RENDER_PASS_VARIANT(13);
+TRAZO_RENDER_PASS_VARIANT(14);
+TRAZO_RENDER_PASS_VARIANT(15);
 
 }  // namespace trazo
