@@ -3,6 +3,7 @@
 #include <cuda_runtime.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
@@ -60,9 +61,11 @@ public:
             (host.empty() || std::memcmp(host.data(), shadow_.data(), host.size() * sizeof(T)) == 0))
             return;
         if (host.size() > capacity_) {
+            // The new block first: if it cannot be had, the array (and every view of it) keeps the old one.
+            T* fresh = nullptr;
+            TRAZO_CUDA_CHECK(cudaMalloc(&fresh, host.size() * sizeof(T)));
             cudaFree(data_);
-            data_ = nullptr;
-            TRAZO_CUDA_CHECK(cudaMalloc(&data_, host.size() * sizeof(T)));
+            data_ = fresh;
             capacity_ = host.size();
         }
         count_ = host.size();
@@ -93,12 +96,42 @@ struct EventTimer {
     EventTimer& operator=(const EventTimer&) = delete;
 };
 
+// Passes launch in 16×16 blocks: whole warps, as the kernel's warp-shuffle ray count needs.
+constexpr unsigned kPassBlockX = 16, kPassBlockY = 16;
+static_assert((kPassBlockX * kPassBlockY) % 32 == 0, "renderPassKernel's ray count shuffles over full warps");
+
+// TRAZO_CUDA_SYNC_EVERY_PASS=1: wait for each pass, so a kernel fault names its pass instead of the batch's.
+bool syncEveryPass() {
+    const char* value = std::getenv("TRAZO_CUDA_SYNC_EVERY_PASS");
+    return value && *value && std::strcmp(value, "0") != 0;
+}
+
+// A failed launch or wait of passes [first, end): which passes, and what the device said.
+void checkPasses(cudaError_t status, uint32_t first, uint32_t end) {
+    if (status == cudaSuccess) return;
+    throw std::runtime_error("CUDA fault in passes [" + std::to_string(first) + ", " + std::to_string(end) +
+                             "): " + cudaGetErrorString(status) +
+                             (end - first > 1 ? " (TRAZO_CUDA_SYNC_EVERY_PASS=1 names the pass)" : ""));
+}
+
 class CudaBackend final : public Backend {
 public:
     CudaBackend() {
         cudaDeviceProp prop{};
         TRAZO_CUDA_CHECK(cudaGetDeviceProperties(&prop, 0));
         deviceName_ = prop.name;
+        // A binary without code for this device fails here, where `auto` can still take the CPU, rather than
+        // at the first launch.
+        cudaFuncAttributes attributes{};
+        const cudaError_t image = cudaFuncGetAttributes(&attributes, rayQueryKernel);
+        if (image != cudaSuccess) {
+            cudaGetLastError();
+            throw std::runtime_error("this trazo has no kernels for " + deviceName_ + " (compute capability " +
+                                     std::to_string(prop.major) + "." + std::to_string(prop.minor) +
+                                     "): rebuild with -DCMAKE_CUDA_ARCHITECTURES=" + std::to_string(prop.major) +
+                                     std::to_string(prop.minor) + " (" + cudaGetErrorString(image) + ")");
+        }
+        syncEveryPass_ = syncEveryPass();
         TRAZO_CUDA_CHECK(cudaMalloc(&rayCounter_, sizeof(unsigned long long)));
         TRAZO_CUDA_CHECK(cudaMemset(rayCounter_, 0, sizeof(unsigned long long)));
     }
@@ -124,9 +157,10 @@ public:
     void resize(uint32_t width, uint32_t height) override {
         cudaFree(accum_);
         accum_ = nullptr;
+        width_ = height_ = 0;  // until the new buffer exists: nothing to clear or read
+        TRAZO_CUDA_CHECK(cudaMalloc(&accum_, (size_t)width * height * sizeof(AccumPixel)));
         width_ = width;
         height_ = height;
-        TRAZO_CUDA_CHECK(cudaMalloc(&accum_, pixelCount() * sizeof(AccumPixel)));
         reset();
     }
     void reset() override {
@@ -134,14 +168,15 @@ public:
         TRAZO_CUDA_CHECK(cudaMemset(rayCounter_, 0, sizeof(unsigned long long)));
     }
     void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override {
-        const dim3 block(16, 16);
+        const dim3 block(kPassBlockX, kPassBlockY);
         const dim3 grid((width_ + block.x - 1) / block.x, (height_ + block.y - 1) / block.y);
         const auto launch = kLaunchVariants[sampleVariantFor(view_.features)];
         for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
             launch(grid, block, view_, frame, pass, accum_, rayCounter_);
-            TRAZO_CUDA_CHECK(cudaGetLastError());
+            checkPasses(cudaGetLastError(), pass, pass + 1);
+            if (syncEveryPass_) checkPasses(cudaDeviceSynchronize(), pass, pass + 1);
         }
-        TRAZO_CUDA_CHECK(cudaDeviceSynchronize());
+        checkPasses(cudaDeviceSynchronize(), firstPass, firstPass + passCount);
     }
     void readAccumulation(std::vector<AccumPixel>& out) override {
         out.resize(pixelCount());
@@ -185,6 +220,7 @@ private:
     size_t pixelCount() const { return (size_t)width_ * height_; }
 
     std::string deviceName_;
+    bool syncEveryPass_ = false;
     struct DeviceScene {
 #define TRAZO_X(T, name) DeviceArray<T> name;
         TRAZO_SCENE_ARRAYS(TRAZO_X)
