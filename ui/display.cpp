@@ -137,7 +137,10 @@ bool Display::fillFromHost(Backend& backend) {
 }
 
 void Display::update(Backend& backend, uint32_t width, uint32_t height) {
-    if (width != width_ || height != height_) allocate(width, height);
+    if (width != width_ || height != height_) {
+        backend.releaseGlBuffer();  // the pixel buffer's store is about to change: no interop registration on it
+        allocate(width, height);
+    }
     bool filled = false;
     if (interopFailedFor_ != &backend) {
         std::string why;

@@ -49,6 +49,9 @@ public:
         why = "the " + name() + " backend has no GL interop";
         return false;
     }
+    // Lets go of the GL buffer resolveToGlBuffer wrote to (CUDA: unregisters it). Called before the buffer's
+    // storage is specified again, which a registered buffer must not see.
+    virtual void releaseGlBuffer() {}
 };
 
 enum class BackendChoice { Auto, Cpu, Cuda };

@@ -16,6 +16,7 @@ namespace trazo {
 class CudaGlDisplay;
 CudaGlDisplay* createCudaGlDisplay();
 void destroyCudaGlDisplay(CudaGlDisplay* display);
+void releaseCudaGlDisplay(CudaGlDisplay& display);
 bool resolveIntoGlBuffer(CudaGlDisplay& display, unsigned glBuffer, const AccumPixel* accum, uint32_t width,
                          uint32_t height, std::string& why);
 
@@ -189,6 +190,9 @@ public:
         }
         if (!glDisplay_) glDisplay_.reset(createCudaGlDisplay());
         return resolveIntoGlBuffer(*glDisplay_, glBuffer, accum_, width, height, why);
+    }
+    void releaseGlBuffer() override {
+        if (glDisplay_) releaseCudaGlDisplay(*glDisplay_);
     }
     uint64_t raysTraced() const override {
         unsigned long long rays = 0;

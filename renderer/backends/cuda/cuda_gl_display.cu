@@ -67,18 +67,19 @@ public:
         return ok;
     }
 
-private:
     void release() {
         if (resource_) cudaGraphicsUnregisterResource(resource_);
         resource_ = nullptr;
     }
 
+private:
     cudaGraphicsResource* resource_ = nullptr;
     unsigned buffer_ = 0;
     uint32_t width_ = 0, height_ = 0;
 };
 
 CudaGlDisplay* createCudaGlDisplay() { return new CudaGlDisplay(); }
+void releaseCudaGlDisplay(CudaGlDisplay& display) { display.release(); }
 void destroyCudaGlDisplay(CudaGlDisplay* display) { delete display; }
 
 bool resolveIntoGlBuffer(CudaGlDisplay& display, unsigned glBuffer, const AccumPixel* accum, uint32_t width,
