@@ -123,9 +123,8 @@ bool Display::fillFromHost(Backend& backend) {
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
         return false;
     }
-    for (size_t i = 0; i < pixels; ++i) {  // sum / count, as resolveImage() does
-        const AccumPixel& p = accum_[i];
-        const Vec3 c = p.count > 0.0f ? p.sum / p.count : Vec3(0.0f);
+    for (size_t i = 0; i < pixels; ++i) {  // as resolveImage() does
+        const Vec3 c = accum_[i].estimate();
         rgba[4 * i + 0] = c.x;
         rgba[4 * i + 1] = c.y;
         rgba[4 * i + 2] = c.z;

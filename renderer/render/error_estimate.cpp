@@ -14,7 +14,7 @@ ErrorEstimate estimateError(const std::vector<AccumPixel>& accum) {
         const double n = p.count, nB = p.countB, nA = n - nB;
         if (!(nA > 0.0 && nB > 0.0)) {
             both = false;
-            if (n > 0.0) mean += (double(p.sum.x) + p.sum.y + p.sum.z) / n;
+            if (n > 0.0) mean += (p.sum[0] + p.sum[1] + p.sum[2]) / n;
             continue;
         }
         const double w = nA * nB / (n * n);

@@ -17,8 +17,8 @@ namespace {
 TEST(ErrorEstimate, FormulaOnTwoPixels) {
     // Pixel 0: first half 2 samples summing to (2,4,6), second half 2 samples summing to (4,4,4).
     std::vector<AccumPixel> accum(2);
-    accum[0] = AccumPixel{Vec3(6, 8, 10), 4.0f, Vec3(4, 4, 4), 2.0f};
-    accum[1] = AccumPixel{Vec3(4, 4, 4), 4.0f, Vec3(2, 2, 2), 2.0f};  // halves agree: no error
+    accum[0] = AccumPixel{{6, 8, 10}, 4.0, {4, 4, 4}, 2.0};
+    accum[1] = AccumPixel{{4, 4, 4}, 4.0, {2, 2, 2}, 2.0};  // halves agree: no error
     const ErrorEstimate e = estimateError(accum);
     ASSERT_TRUE(e.available);
     // Pixel 0: A = (1,2,3), B = (2,2,2), d = (-1,0,1); w = 2·2/16 = 1/4; variance sum = 0.25·2 = 0.5.
@@ -30,7 +30,7 @@ TEST(ErrorEstimate, FormulaOnTwoPixels) {
 }
 
 TEST(ErrorEstimate, UnavailableWithOneHalfEmpty) {
-    std::vector<AccumPixel> accum(3, AccumPixel{Vec3(1, 1, 1), 1.0f, Vec3(0.0f), 0.0f});
+    std::vector<AccumPixel> accum(3, AccumPixel{{1, 1, 1}, 1.0, {0, 0, 0}, 0.0});
     const ErrorEstimate e = estimateError(accum);
     EXPECT_FALSE(e.available);
     EXPECT_TRUE(std::isnan(e.relError));
@@ -41,10 +41,25 @@ TEST(ErrorEstimate, AddSplitsIntoTheSecondHalf) {
     AccumPixel p{};
     p.add(Vec3(1.0f), false, 1.0f);
     p.add(Vec3(2.0f), true, 1.0f);
-    EXPECT_EQ(p.count, 2.0f);
-    EXPECT_EQ(p.sum.x, 3.0f);
-    EXPECT_EQ(p.countB, 1.0f);
-    EXPECT_EQ(p.sumB.x, 2.0f);
+    EXPECT_EQ(p.count, 2.0);
+    EXPECT_EQ(p.sum[0], 3.0);
+    EXPECT_EQ(p.countB, 1.0);
+    EXPECT_EQ(p.sumB[0], 2.0);
+    EXPECT_EQ(p.estimate().x, 1.5f);
+}
+
+// Past 2^24 samples a float count stops counting and a float sum stops growing; the accumulation's doubles
+// keep both exact, at the viewer's weights too.
+TEST(ErrorEstimate, AccumulationCountsPast2To24) {
+    for (float weight : {1.0f, 100.0f}) {
+        AccumPixel p{};
+        const uint32_t samples = (1u << 24) + 1000u;
+        for (uint32_t i = 0; i < samples; ++i) p.add(Vec3(0.25f, 1.0f, 3.0f), (i & 1u) != 0, weight);
+        EXPECT_EQ(p.count, double(samples) * weight);
+        EXPECT_EQ(p.countB, double(samples / 2) * weight);
+        EXPECT_EQ(p.estimate().x, 0.25f);
+        EXPECT_EQ(p.estimate().z, 3.0f);
+    }
 }
 
 TEST(ErrorEstimate, CompareToReference) {
@@ -115,7 +130,7 @@ public:
     double trueRelError() const {
         double se = 0, mean = 0;
         for (uint32_t i = 0; i < accum_.size(); ++i) {
-            const double d = accum_[i].sum.x / accum_[i].count - exact(i);
+            const double d = accum_[i].sum[0] / accum_[i].count - exact(i);
             se += d * d;
             mean += exact(i);
         }

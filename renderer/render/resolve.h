@@ -10,7 +10,7 @@ namespace trazo {
 inline std::vector<Vec3> resolveImage(const std::vector<AccumPixel>& accum) {
     std::vector<Vec3> image(accum.size());
     for (size_t i = 0; i < accum.size(); ++i)
-        image[i] = accum[i].count > 0.0f ? accum[i].sum / accum[i].count : Vec3(0.0f);
+        image[i] = accum[i].estimate();
     return image;
 }
 

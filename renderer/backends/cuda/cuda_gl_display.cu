@@ -15,8 +15,7 @@ namespace {
 __global__ void resolveToRgbaKernel(const AccumPixel* accum, float4* rgba, uint32_t pixelCount) {
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= pixelCount) return;
-    const AccumPixel p = accum[i];
-    const Vec3 c = p.count > 0.0f ? p.sum / p.count : Vec3(0.0f);  // as resolveImage() does on the host
+    const Vec3 c = accum[i].estimate();  // as resolveImage() does on the host
     rgba[i] = make_float4(c.x, c.y, c.z, 1.0f);
 }
 
