@@ -35,7 +35,8 @@ std::string formatStatsSummary(const RenderStats& s) {
     std::snprintf(buf, sizeof buf,
                   "scene creation %.4f s (read %.4f s, build %.4f s), upload %.4f s, render %.4f s, peak memory %.0f MB\n"
                   "%u x %u, %u passes (full cycle %u; blocks %s%s), %llu rays, %.2f Mrays/s on %s (%s)\n",
-                  s.parseSeconds, s.readSeconds, s.buildSeconds, s.uploadSeconds, s.renderSeconds, s.peakRssMb, s.width, s.height, s.spp, s.fullCycle,
+                  s.parseSeconds, s.readSeconds, s.buildSeconds, s.uploadSeconds, s.renderSeconds, s.peakRssMb,
+                  s.width, s.height, s.spp, s.fullCycle,
                   s.blocks.c_str(), s.fixedGrid ? ", the fixed grid" : "", (unsigned long long)s.rays,
                   s.mraysPerSecond(), s.backend.c_str(), s.device.c_str());
     std::string out = buf;

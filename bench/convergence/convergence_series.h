@@ -35,7 +35,7 @@ struct SeriesRequest {
     uint32_t seed = 0;
     uint32_t maxPasses = 256;
     StrataBlocks blocks{};       // the strata a pass takes (StrataBlocks::whole(): the thesis's fixed grid)
-    bool cycleMultiples = true;  // also read at cycle·2^k passes (when a cycle is several), where the image is balanced
+    bool cycleMultiples = true;  // also read at cycle·2^k passes (a cycle of several): where the image is balanced
     double maxSeconds = 0;  // > 0: stop doubling once the render time passes this
 };
 

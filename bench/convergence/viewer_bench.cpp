@@ -85,7 +85,8 @@ int main(int argc, char** argv) {
 
     std::printf("# %s, %ux%u, cpu: relative error against a %u-pass reference (blocks %s)\n", path.c_str(), width,
                 height, limits.passes, describeBlocks(blocks).c_str());
-    std::printf("| blocks | seconds | passes | one-stratum samples | rel. error | blocks now |\n|---|---|---|---|---|---|\n");
+    std::printf("| blocks | seconds | passes | one-stratum samples | rel. error | blocks now |\n");
+    std::printf("|---|---|---|---|---|---|\n");
     for (bool grow : {false, true}) {
         for (const Reading& r : run(scene, reference, width, height, threads, grow, seconds))
             std::printf("| %s | %.2f | %u | %.0f | %.3f%% | %s |\n", grow ? "growing" : "one stratum", r.seconds,

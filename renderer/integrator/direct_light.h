@@ -64,7 +64,8 @@ struct PointBrdf {
         if (hasDiffuse) f = m.diffuse * evalOrenNayar(diffuseView, sp.n, l);
         if (hasSpecular) f += m.specular * evalCookTorrance(sp.n, l, sp.v, m.roughness);
 #else  // both lobes, branch-free: a black one adds 0
-        f = m.diffuse * evalOrenNayar(sp.n, l, sp.v, m.roughness) + m.specular * evalCookTorrance(sp.n, l, sp.v, m.roughness);
+        f = m.diffuse * evalOrenNayar(sp.n, l, sp.v, m.roughness) +
+            m.specular * evalCookTorrance(sp.n, l, sp.v, m.roughness);
 #endif
         return f;
     }
@@ -102,7 +103,8 @@ TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const 
     if constexpr ((F & kFeatureAreaLights) != 0) {
     for (uint32_t i = 0; i < scene.areaLights.count; ++i) {
         const AreaLightData& light = scene.areaLights[i];
-        const StrataBlock cells = strata.block(kGridAreaLightBase + i, light.cellsU * light.cellsV, lightBlock, rotation);
+        const StrataBlock cells =
+            strata.block(kGridAreaLightBase + i, light.cellsU * light.cellsV, lightBlock, rotation);
         Vec3 lightSum(0.0f);
         for (uint32_t j = 0; j < cells.size; ++j) {
             const uint32_t s = cells.stratum(j);
