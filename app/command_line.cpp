@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "render/strata_plan.h"
+
 namespace trazo {
 
 std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
@@ -21,7 +23,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         ->check(CLI::Range(1e-6, 1.0));
     app.add_flag("--fixed-grid", out.fixedGrid,
                  "The thesis's estimator: every pass evaluates every stratum of every grid (for comparisons)");
-    app.add_option("--blocks", out.blocks,
+    std::string blocks = "auto";
+    app.add_option("--blocks", blocks,
                    "Strata of each grid per pass: auto (measured per scene), 1, whole (= --fixed-grid), or "
                    "AA,LIGHT,INDIRECT,LIGHT_AT_INDIRECT targets, e.g. 1,100,1,5")
         ->capture_default_str();
@@ -51,6 +54,17 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     } catch (const CLI::ParseError& e) {
         app.exit(e);
         return 2;
+    }
+    if (out.fixedGrid) {
+        out.blocks = StrataBlocks::whole();
+    } else if (blocks != "auto") {
+        StrataBlocks parsed;
+        std::string why;
+        if (!parseStrataBlocks(blocks, parsed, why)) {
+            std::fprintf(stderr, "trazo: --blocks %s: %s\n", blocks.c_str(), why.c_str());
+            return 2;
+        }
+        out.blocks = parsed;
     }
     if (out.renderScene.empty() && out.viewerScene.empty()) {
         std::fputs("trazo: no scene given; try `trazo --render SCENE -o image.png` or `trazo --help`\n", stderr);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "backends/backend.h"
+#include "integrator/strata.h"
 
 namespace trazo {
 
@@ -17,7 +18,9 @@ struct CommandLine {
     double seconds = 0.0;
     double targetError = 0.0;  // --target-error: stop once the estimated relative error is below this
     bool fixedGrid = false;    // --fixed-grid: every stratum of every grid in each pass, as the thesis did
-    std::string blocks = "auto";  // --blocks: the strata of each grid a pass takes (parseStrataBlocks)
+    // --blocks (parseStrataBlocks), or whole with --fixed-grid: the strata of each grid a pass takes. None
+    // ("auto"): the render's own choice (headlessBlocks; the viewer's growing blocks).
+    std::optional<StrataBlocks> blocks;
     BackendChoice backend = BackendChoice::Auto;
     unsigned threads = 0;
     uint32_t seed = 0;

@@ -62,16 +62,7 @@ int runHeadlessRender(const CommandLine& options) {
     }
     stats.width = options.width.value_or((uint32_t)scene.settings.renderWidth);
     stats.height = options.height.value_or((uint32_t)scene.settings.renderHeight);
-    StrataBlocks blocks = headlessBlocks(flat.arrays);
-    if (options.fixedGrid) {
-        blocks = StrataBlocks::whole();
-    } else if (options.blocks != "auto") {
-        std::string why;
-        if (!parseStrataBlocks(options.blocks, blocks, why)) {
-            std::fprintf(stderr, "trazo: --blocks %s: %s\n", options.blocks.c_str(), why.c_str());
-            return 2;
-        }
-    }
+    const StrataBlocks blocks = options.blocks.value_or(headlessBlocks(flat.arrays));
     stats.fullCycle = fullCyclePasses(flat.arrays, blocks);
     stats.blocks = describeBlocks(blocks);
     stats.features = describeFeatures(flat.arrays.features);

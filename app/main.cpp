@@ -3,7 +3,6 @@
 
 #include "command_line.h"
 #include "headless_render.h"
-#include "render/strata_plan.h"
 #if defined(TRAZO_HAS_VIEWER)
 #include "viewer_app.h"
 #endif
@@ -23,15 +22,7 @@ int main(int argc, char** argv) {
     viewer.frames = options.frames;
     viewer.screenshot = options.screenshot;
     viewer.quiet = options.quiet;
-    if (options.fixedGrid || options.blocks != "auto") {
-        trazo::StrataBlocks blocks = trazo::StrataBlocks::whole();
-        std::string why;
-        if (!options.fixedGrid && !trazo::parseStrataBlocks(options.blocks, blocks, why)) {
-            std::fprintf(stderr, "trazo: --blocks %s: %s\n", options.blocks.c_str(), why.c_str());
-            return 2;
-        }
-        viewer.blocks = blocks;
-    }
+    viewer.blocks = options.blocks;
     return trazo::runViewer(viewer);
 #else
     std::fprintf(stderr,

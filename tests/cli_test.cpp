@@ -72,6 +72,24 @@ TEST(Cli, BadSceneGivesFileLineExitTwoAndNoImage) {
     EXPECT_FALSE(fs::exists(out));
 }
 
+// A malformed --blocks is a usage error (exit 2, the option and the accepted forms named, no image); a good one
+// is what the stats report.
+TEST(Cli, BlocksAreParsedOrRefused) {
+    const std::string scene = writeFile("blocks.scene", kSmallScene);
+    const std::string out = tempPath("blocks.png"), stats = tempPath("blocks.json");
+    fs::remove(out);
+    for (const char* bad : {"0", "1,2", "x"}) {
+        const CommandResult r = runTrazo("--render " + scene + " -o " + out + " --blocks " + bad);
+        EXPECT_EQ(r.status, 2) << bad;
+        EXPECT_NE(r.errors.find(std::string("--blocks ") + bad + ":"), std::string::npos) << r.errors;
+        EXPECT_FALSE(fs::exists(out));
+    }
+    const CommandResult r =
+        runTrazo("--render " + scene + " -o " + out + " --blocks 1,whole,3,1 --quiet --stats " + stats);
+    ASSERT_EQ(r.status, 0) << r.errors;
+    EXPECT_NE(readFileText(stats).find("\"blocks\": \"1,whole,3,1\""), std::string::npos);
+}
+
 TEST(Cli, FailedRenderLeavesAnExistingImageAlone) {
     const std::string scene = writeFile("bad2.scene", "Sphere\n{\n    Radius -1\n}\n");
     const std::string out = writeFile("keep.png", "previous contents");
