@@ -25,13 +25,11 @@ struct PrimRef {
     uint32_t pad;
 };
 
-// Ternary min/max compile to single SSE instructions (fminf's NaN rules do not), and the builder never
+// minOf/maxOf (core/vec3.h): single SSE instructions, where fminf's NaN rules are calls; the builder never
 // sees NaN bounds it must keep.
-inline float fastMin(float a, float b) { return a < b ? a : b; }
-inline float fastMax(float a, float b) { return a > b ? a : b; }
 inline void growBox(Aabb& box, Vec3 lo, Vec3 hi) {
-    box.min = {fastMin(box.min.x, lo.x), fastMin(box.min.y, lo.y), fastMin(box.min.z, lo.z)};
-    box.max = {fastMax(box.max.x, hi.x), fastMax(box.max.y, hi.y), fastMax(box.max.z, hi.z)};
+    box.min = {minOf(box.min.x, lo.x), minOf(box.min.y, lo.y), minOf(box.min.z, lo.z)};
+    box.max = {maxOf(box.max.x, hi.x), maxOf(box.max.y, hi.y), maxOf(box.max.z, hi.z)};
 }
 inline void growBox(Aabb& box, const Aabb& b) { growBox(box, b.min, b.max); }
 inline Vec3 centroidOf(const PrimRef& r) { return (r.min + r.max) * 0.5f; }
@@ -60,8 +58,8 @@ struct alignas(16) BinBox {
     float lo[4], hi[4];
     void grow(Vec3 bMin, Vec3 bMax) {
         for (int a = 0; a < 3; ++a) {
-            lo[a] = fastMin(lo[a], bMin[a]);
-            hi[a] = fastMax(hi[a], bMax[a]);
+            lo[a] = minOf(lo[a], bMin[a]);
+            hi[a] = maxOf(hi[a], bMax[a]);
         }
     }
     Aabb aabb() const {
@@ -362,7 +360,7 @@ private:
         uint32_t i = r.begin, j = r.end;
 #if defined(__SSE2__)
         // binOf's arithmetic in four lanes, as binPrimitives does it, and the boxes grown by minps/maxps
-        // (which are fastMin/fastMax: "a < b ? a : b"), so the result is the scalar loop's bit for bit.
+        // (which are minOf/maxOf: "a < b ? a : b"), so the result is the scalar loop's bit for bit.
         const __m128 origin = _mm_setr_ps(m.origin.x, m.origin.y, m.origin.z, 0.0f);
         const __m128 scale = _mm_setr_ps(m.scale.x, m.scale.y, m.scale.z, 0.0f);
         const __m128 half = _mm_set1_ps(0.5f), zero = _mm_setzero_ps(), last = _mm_set1_ps((float)(m.binCount - 1));
