@@ -230,6 +230,28 @@ void releaseFreedHeap() {
 #endif
 }
 
+// Builds the BVH of `count` triangles (bounds(t): triangle t's box), appends its nodes and MeshShape, then
+// writes the triangles in its leaf order on all cores: write(k, t) puts triangle t at out.triangles[k] and
+// out.triangleCorners[k]. Returns the MeshShape's index.
+template <class BoundsFn, class WriteFn>
+uint32_t appendInBvhOrder(uint32_t count, bool hasUvs, SceneArrays& out, BoundsFn&& bounds, WriteFn&& write) {
+    const size_t first = out.triangles.size();
+    std::vector<uint32_t> order;
+    uint32_t index;
+    {  // the binary BVH and the builder's arrays are gone before the triangles are written
+        Bvh bvh = buildBvh(count, bounds, triangleBvhOptions());
+        index = appendShape(bvh, (uint32_t)first, count, hasUvs, out);
+        order = std::move(bvh.primitiveOrder);
+    }
+    releaseFreedHeap();
+    out.triangles.resize(first + count);
+    out.triangleCorners.resize(first + count);
+    parallelChunks(count, [&](size_t b, size_t e) {
+        for (size_t i = b; i < e; ++i) write(first + i, order[i]);
+    });
+    return index;
+}
+
 }  // namespace
 
 PreparedMesh prepareMesh(const MeshData& data, const Affine3& worldFromObject) {
@@ -249,48 +271,26 @@ PreparedMesh prepareMesh(const MeshData& data, const Affine3& worldFromObject) {
 }
 
 uint32_t appendMesh(const PreparedMesh& mesh, SceneArrays& out) {
-    const uint32_t count = (uint32_t)mesh.triangles.size();
-    std::vector<uint32_t> order;
-    uint32_t index;
-    {
-        Bvh bvh = buildBvh(
-            count,
-            [&](uint32_t i) {
-                const MeshTriangle& t = mesh.triangles[i];
-                return Aabb{min(t.p0, min(t.p1, t.p2)), max(t.p0, max(t.p1, t.p2))};
-            },
-            triangleBvhOptions());
-        index = appendShape(bvh, (uint32_t)out.triangles.size(), count, mesh.hasUvs, out);
-        order = std::move(bvh.primitiveOrder);
-    }
-    for (uint32_t old : order) {
-        out.triangles.push_back(mesh.triangles[old]);
-        out.triangleCorners.push_back(mesh.corners[old]);
-    }
-    return index;
+    return appendInBvhOrder(
+        (uint32_t)mesh.triangles.size(), mesh.hasUvs, out,
+        [&](uint32_t t) {
+            const MeshTriangle& tri = mesh.triangles[t];
+            return Aabb{min(tri.p0, min(tri.p1, tri.p2)), max(tri.p0, max(tri.p1, tri.p2))};
+        },
+        [&](size_t k, uint32_t t) {
+            out.triangles[k] = mesh.triangles[t];
+            out.triangleCorners[k] = mesh.corners[t];
+        });
 }
 
 uint32_t appendMesh(const MeshData& data, const Affine3& worldFromObject, SceneArrays& out) {
-    const uint32_t count = (uint32_t)(data.corners.size() / 3);
     const MeshShading shading(data, worldFromObject);
-    const size_t first = out.triangles.size();
-    std::vector<uint32_t> order;
-    uint32_t index;
-    {  // the binary BVH and the builder's arrays are gone before the triangles are written
-        Bvh bvh = buildBvh(count, [&](uint32_t t) { return shading.bounds(t); }, triangleBvhOptions());
-        index = appendShape(bvh, (uint32_t)first, count, data.hasUvs, out);
-        order = std::move(bvh.primitiveOrder);
-    }
-    releaseFreedHeap();
-    out.triangles.resize(first + count);
-    out.triangleCorners.resize(first + count);
-    parallelChunks(count, [&](size_t b, size_t e) {
-        for (size_t i = b; i < e; ++i) {
-            out.triangles[first + i] = shading.triangle(order[i]);
-            out.triangleCorners[first + i] = shading.corners(order[i]);
-        }
-    });
-    return index;
+    return appendInBvhOrder(
+        (uint32_t)(data.corners.size() / 3), data.hasUvs, out, [&](uint32_t t) { return shading.bounds(t); },
+        [&](size_t k, uint32_t t) {
+            out.triangles[k] = shading.triangle(t);
+            out.triangleCorners[k] = shading.corners(t);
+        });
 }
 
 }  // namespace trazo

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "geometry/tessellate.h"
 
 namespace trazo {
@@ -120,6 +122,26 @@ TEST(AppendMesh, TrianglesGoInBvhLeafOrderAndEachLeafBoundsItsTriangles) {
                 }
             }
         EXPECT_EQ(covered, 300u);
+    }
+}
+
+// The one-step appendMesh (what flatten uses) uploads exactly what prepareMesh then appendMesh does, with
+// and without uvs, computed normals or given ones, after another mesh.
+TEST(AppendMesh, OneStepEqualsPrepareThenAppendByteForByte) {
+    const Affine3 world = then(makeScale(Vec3(2, 1, 1)), makeRotation(normalize(Vec3(1, 2, 3)), 0.8f));
+    for (const MeshData& m : {indexedMesh(tessellateSphere(Vec3(0), 1.0f, 12, 24)), quad(false), quad(true)}) {
+        SceneArrays twoStep, oneStep;
+        appendMesh(prepareMesh(m, Affine3{}), twoStep);
+        appendMesh(m, Affine3{}, oneStep);
+        appendMesh(prepareMesh(m, world), twoStep);
+        appendMesh(m, world, oneStep);
+        auto same = [](const auto& a, const auto& b) {
+            return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
+        };
+        EXPECT_TRUE(same(twoStep.triangles, oneStep.triangles));
+        EXPECT_TRUE(same(twoStep.triangleCorners, oneStep.triangleCorners));
+        EXPECT_TRUE(same(twoStep.meshNodes, oneStep.meshNodes));
+        EXPECT_TRUE(same(twoStep.meshes, oneStep.meshes));
     }
 }
 
