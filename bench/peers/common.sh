@@ -1,4 +1,19 @@
-# Helpers sourced by run_peers.sh and thesis_table.sh (bash): JSON fields, medians, wall clocks.
+# Helpers sourced by run_peers.sh and thesis_table.sh (bash): their arguments, JSON fields, medians, wall clocks.
+
+# run_arguments DEFAULT_OUT [BUILD] [THREADS] [OUT]: the scripts' shared arguments, as absolute paths: build
+# (default build), threads (default 2), out (created), size ($SIZE, default 512), and the tools both use,
+# trazo and imageError.
+run_arguments() {
+  local defaultOut=$1
+  build=$(cd "${2:-build}" && pwd)
+  threads=${3:-2}
+  out=${4:-$defaultOut}
+  mkdir -p "$out"
+  out=$(cd "$out" && pwd)
+  size=${SIZE:-512}
+  trazo="$build/app/trazo"
+  imageError="$build/bench/peers/image_error"
+}
 
 # json_field FILE KEY: the value of a flat "KEY": value line of the stats JSON trazo --stats writes.
 json_field() {

@@ -20,19 +20,12 @@
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/../.." && pwd)
 source "$repo/bench/peers/common.sh"
-build=$(cd "${1:-build}" && pwd)
-threads=${2:-2}
-out=${3:-peers_out}
-mkdir -p "$out"
-out=$(cd "$out" && pwd)
-size=${SIZE:-512}
+run_arguments peers_out "$@"
 runs=${RUNS:-3}
 trazoRef=${TRAZO_REF_PASSES:-16}
 povRefCells=${POV_REF_CELLS:-40}
 embreeRef=${EMBREE_REF_SAMPLES:-16}
 
-trazo="$build/app/trazo"
-imageError="$build/bench/peers/image_error"
 embree="$build/bench/peers/embree_render"
 [ -x "$trazo" ] && [ -x "$imageError" ] || { echo "build trazo and image_error first" >&2; exit 2; }
 havePov=0; command -v povray >/dev/null && havePov=1

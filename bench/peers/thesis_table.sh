@@ -16,17 +16,10 @@
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/../.." && pwd)
 source "$repo/bench/peers/common.sh"
-build=$(cd "${1:-build}" && pwd)
-threads=${2:-2}
-out=${3:-thesis_table}
-mkdir -p "$out"
-out=$(cd "$out" && pwd)
-size=${SIZE:-512}
+run_arguments thesis_table "$@"
 backend=${BACKEND:-cpu}
 seedCsv="${TRAZO_SEED_DIR:-$repo/../shared/seed}/results.csv"
 [ -f "$seedCsv" ] || seedCsv="$repo/bench/peers/thesis_results.csv"
-trazo="$build/app/trazo"
-imageError="$build/bench/peers/image_error"
 barChart="$build/bench/peers/bar_chart"
 [ -x "$trazo" ] && [ -x "$imageError" ] && [ -x "$barChart" ] || { echo "build trazo, image_error, bar_chart" >&2; exit 2; }
 work="$out/images"
