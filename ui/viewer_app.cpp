@@ -143,7 +143,8 @@ public:
                 if (session_.samples() < double(target)) {
                     // The target counts one-stratum passes; a pass of a grown segment stands for several.
                     const double left = (double(target) - session_.samples()) / session_.blocksWeight();
-                    session_.startPasses(uint32_t(std::clamp(std::ceil(left), 1.0, double(session_.passesForBudget(kBatchSeconds)))));
+                    const double budget = session_.passesForBudget(kBatchSeconds);
+                    session_.startPasses(uint32_t(std::clamp(std::ceil(left), 1.0, budget)));
                     ++batches_;
                 }
             }

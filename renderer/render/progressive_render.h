@@ -32,9 +32,9 @@ struct RenderLimits {
     uint32_t passes = 1;       // stop after this many passes (capped at kMaxProgressivePasses)
     double seconds = 0.0;      // and after this wall time, when > 0 (whichever comes first)
     double targetError = 0.0;  // and once estimateError(...).relError <= this, when > 0
-    // The scene's full cycle for the frame's blocks (fullCyclePasses): sets the half split, and the target error is checked only at multiples of
-    // 2·cyclePasses, where the estimate is unbiased (and a stratified image is at its best). 0: no halves
-    // and no target error.
+    // The scene's full cycle for the frame's blocks (fullCyclePasses): sets the half split, and the target
+    // error is checked only at multiples of 2·cyclePasses, where the estimate is unbiased (and a stratified
+    // image is at its best). 0: no halves and no target error.
     uint32_t cyclePasses = 0;
 };
 

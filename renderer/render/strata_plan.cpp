@@ -40,14 +40,15 @@ uint32_t fullCyclePasses(const SceneArrays& a, const StrataBlocks& blocks) { ret
 uint32_t cameraPathPasses(const SceneArrays& a, const StrataBlocks& blocks) { return cyclePasses(a, blocks, false); }
 
 // Measured on the seed scenes (time × two-seed variance of `--blocks` choices; bench/peers/thesis_table.sh
-// compares the result with the fixed grid): a grid on the camera path is worth a whole block whenever nothing above it must cycle, because the rays
-// above it are then traced once. Glossy cones cycle one stratum per pass (2q² passes), so the other
-// camera-path grids take blocks that complete once in those passes. At indirect hits one cell per
+// compares the result with the fixed grid): a grid on the camera path is worth a whole block whenever nothing
+// above it must cycle, because the rays above it are then traced once. Glossy cones cycle one stratum per
+// pass (2q² passes), so the other camera-path grids take blocks that complete once in those passes. At indirect hits one cell per
 // direction, rotated so a pass's directions take different cells, beats the thesis's every-cell fan by 3×
 // in time × variance on scene 9 (the fan spends 25 shadow rays where the direction's own variance dominates).
 StrataBlocks headlessBlocks(const SceneArrays& a) {
     const uint64_t q = a.settings.reflectionQuality;
-    const uint32_t unblocked = (a.features & kFeatureGlossy) && q > 0 ? (uint32_t)std::min<uint64_t>(2 * q * q, kMaxCyclePasses) : 1u;
+    const uint32_t unblocked =
+        (a.features & kFeatureGlossy) && q > 0 ? (uint32_t)std::min<uint64_t>(2 * q * q, kMaxCyclePasses) : 1u;
     auto completingIn = [&](uint64_t count) {  // the block that completes a grid of `count` in `unblocked` passes
         if (count == 0 || count > UINT32_MAX) return 1u;
         return (uint32_t)(count / std::gcd(count, (uint64_t)unblocked));
@@ -56,7 +57,8 @@ StrataBlocks headlessBlocks(const SceneArrays& a) {
     const uint64_t k = antialiasingSide(a.settings.antialiasing);
     b.antialiasing = completingIn(k * k);
     b.areaLight = 1;
-    for (const AreaLightData& l : a.areaLights) b.areaLight = std::max(b.areaLight, completingIn((uint64_t)l.cellsU * l.cellsV));
+    for (const AreaLightData& l : a.areaLights)
+        b.areaLight = std::max(b.areaLight, completingIn((uint64_t)l.cellsU * l.cellsV));
     b.indirect = kWholeGrid;
     b.lightAtIndirect = 1;
     return clampToScene(a, b);
