@@ -225,6 +225,29 @@ TEST(StrataBlocks, DeterministicAcrossThreadCounts) {
     }
 }
 
+// The headless rule on seed scenes: whole camera-path grids (scene 1: one pass), blocks that complete in the
+// glossy cones' 2q² passes (scene 6: 100 cells in 50 passes), one rotated light cell per indirect direction
+// (scene 9: the 18 directions whole, the 25 cells at Q over a 25-pass full cycle).
+TEST(StrataBlocks, HeadlessRuleOnSeedScenes) {
+    struct Expected {
+        const char* scene;
+        const char* blocks;
+        uint32_t cameraPath, full;
+    };
+    for (const Expected& e : {Expected{"scenes/scene1_area.scene", "1,100,1,1", 1, 1},
+                              Expected{"scenes/scene6_glossy.scene", "1,2,1,1", 50, 50},
+                              Expected{"scenes/scene9_indirect.scene", "1,25,18,1", 1, 25}}) {
+        Diagnostics diags;
+        const Scene scene = readSceneFile(sourcePath(e.scene), diags);
+        ASSERT_FALSE(diags.hasErrors()) << e.scene;
+        const SceneArrays arrays = flatten(scene).arrays;
+        const StrataBlocks blocks = headlessBlocks(arrays);
+        EXPECT_EQ(describeBlocks(blocks), e.blocks) << e.scene;
+        EXPECT_EQ(cameraPathPasses(arrays, blocks), e.cameraPath) << e.scene;
+        EXPECT_EQ(fullCyclePasses(arrays, blocks), e.full) << e.scene;
+    }
+}
+
 TEST(StrataBlocks, ParsesTheCommandLineForms) {
     StrataBlocks b;
     std::string why;
