@@ -1,4 +1,4 @@
-# Helpers sourced by run_peers.sh and thesis_table.sh (bash): their arguments, JSON fields, medians, wall clocks.
+# Helpers sourced by the bench/peers scripts (bash): their arguments, two-seed renders, JSON fields, medians, wall clocks.
 
 # run_arguments DEFAULT_OUT [BUILD] [THREADS] [OUT]: the scripts' shared arguments, as absolute paths: build
 # (default build), threads (default 2), out (created), size ($SIZE, default 512), and the tools both use,
@@ -13,6 +13,22 @@ run_arguments() {
   size=${SIZE:-512}
   trazo="$build/app/trazo"
   imageError="$build/bench/peers/image_error"
+}
+
+# two_seeds PREFIX TRAZO_ARGS...: `trazo TRAZO_ARGS` with seeds 1 and 2 into PREFIX_1/2.pfm and .json (its
+# messages into PREFIX.log); prints the mean render_s, the two-seed variance mean((A − B)²)/2 and one image's
+# relative deviation (image_error --variance).
+two_seeds() {
+  local prefix=$1 seed t stats
+  shift
+  for seed in 1 2; do
+    "$trazo" "$@" --seed $seed --quiet -o "${prefix}_$seed.pfm" --stats "${prefix}_$seed.json" >/dev/null \
+      2>"$prefix.log" || { echo "trazo failed, see $prefix.log" >&2; return 1; }
+  done
+  t=$(awk -v a="$(json_field "${prefix}_1.json" render_s)" -v b="$(json_field "${prefix}_2.json" render_s)" \
+    'BEGIN { printf "%.4f", (a + b) / 2 }')
+  stats=$("$imageError" --variance "${prefix}_1.pfm" "${prefix}_2.pfm")
+  echo "$t $(field "$stats" variance) $(field "$stats" rel_sd)"
 }
 
 # json_field FILE KEY: the value of a flat "KEY": value line of the stats JSON trazo --stats writes.

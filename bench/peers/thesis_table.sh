@@ -38,14 +38,9 @@ while IFS=$'\t' read -r sceneFile variant gtx; do
   echo "== $sceneFile ($variant)" >&2
   for mode in default fixed; do
     flags=(); [ $mode = fixed ] && flags=(--fixed-grid)
-    for seed in 1 2; do
-      "$trazo" --render "$repo/scenes/$sceneFile" --backend "$backend" --threads "$threads" --width "$size" \
-        --height "$size" --seed $seed --quiet -o "$work/${name}_${mode}_$seed.pfm" \
-        --stats "$work/${name}_${mode}_$seed.json" "${flags[@]}" >/dev/null 2>"$work/${name}_$mode.log"
-    done
-    j1="$work/${name}_${mode}_1.json" j2="$work/${name}_${mode}_2.json"
-    t=$(awk -v a="$(json_field "$j1" render_s)" -v b="$(json_field "$j2" render_s)" 'BEGIN { printf "%.4f", (a + b) / 2 }')
-    v=$(field "$("$imageError" --variance "$work/${name}_${mode}_1.pfm" "$work/${name}_${mode}_2.pfm")" variance)
+    measured=$(two_seeds "$work/${name}_$mode" --render "$repo/scenes/$sceneFile" --backend "$backend" \
+      --threads "$threads" --width "$size" --height "$size" "${flags[@]}")  # a failed render stops the script
+    read -r t v _ <<<"$measured"
     eval "${mode}_t=\$t ${mode}_v=\$v"
   done
   j="$work/${name}_default_1.json"  # passes, Mrays/s and the estimate: the default render, seed 1

@@ -39,8 +39,8 @@ uint32_t fullCyclePasses(const SceneArrays& a, const StrataBlocks& blocks) { ret
 
 uint32_t cameraPathPasses(const SceneArrays& a, const StrataBlocks& blocks) { return cyclePasses(a, blocks, false); }
 
-// Measured on the seed scenes (time × two-seed variance of `--blocks` choices; bench/peers/thesis_table.sh
-// compares the result with the fixed grid): a grid on the camera path is worth a whole block whenever nothing
+// Measured on the seed scenes (time × two-seed variance of `--blocks` choices: bench/peers/blocks_sweep.sh;
+// bench/peers/thesis_table.sh compares the result with the fixed grid on all of them): a grid on the camera path is worth a whole block whenever nothing
 // above it must cycle, because the rays above it are then traced once. Glossy cones cycle one stratum per
 // pass (2q² passes), so the other camera-path grids take blocks that complete once in those passes. At indirect hits one cell per
 // direction, rotated so a pass's directions take different cells, beats the thesis's every-cell fan by 3×
