@@ -1,11 +1,16 @@
 // Test harness: scene text -> image through the real reader, flatten, CPU backend and resolve.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "backends/backend.h"
 #include "core/vec3.h"
+
+namespace trazo {
+struct Scene;
+}
 
 namespace trazo::test {
 
@@ -25,11 +30,17 @@ struct RenderRequest {
     int width = 0, height = 0;  // 0: the scene's RenderWidth/RenderHeight
     StrataBlocks blocks{};      // the strata a pass takes (StrataBlocks::whole(): the thesis's estimator)
     bool cycleAware = false;    // render as the CLI does: halves and strata windows from the scene's cycle
+    std::function<void(Scene&)> editScene;  // applied to the scene as read, before flatten (e.g. a nudge)
 };
 
 // Fails the current test (ADD_FAILURE) and returns an empty image when the scene does not read.
 RenderedImage renderSceneText(const std::string& sceneText, const RenderRequest& request);
 RenderedImage renderSceneFile(const std::string& path, const RenderRequest& request);
+
+// Scales the whole scene (camera, lights, every object) about the origin by `factor`: in exact arithmetic the
+// same image (lighting here has no distance falloff), but every non-zero coordinate, and so every float
+// operation after it, rounds differently. Exact zeros and axis-aligned directions stay exact.
+void scaleSceneAboutOrigin(Scene& scene, double factor);
 
 // Root-mean-square difference over all channels.
 double rmse(const RenderedImage& a, const RenderedImage& b);
