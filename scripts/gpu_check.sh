@@ -130,13 +130,15 @@ if [ -z "$no_gpu" ] && [ -z "$no_carry" ]; then
         # trazo_tests and bvh_bench have the build machine's source dir and trazo path compiled in.
         if [ -n "$SRC_BAKED" ] && [ "$(readlink -f "$SRC_BAKED" 2>/dev/null || true)" != "$repo" ]; then
             if [ ! -e "$SRC_BAKED" ]; then
-                mkdir -p "$(dirname "$SRC_BAKED")" && ln -s "$repo" "$SRC_BAKED" && say "linked $SRC_BAKED -> $repo"
+                if mkdir -p "$(dirname "$SRC_BAKED")" && ln -s "$repo" "$SRC_BAKED"; then say "linked $SRC_BAKED -> $repo"
+                else say "WARNING: could not link $SRC_BAKED -> $repo: the tests will not find the scenes"; fi
             else
                 say "WARNING: $SRC_BAKED exists here and is not this tree: the tests read scenes from there"
             fi
         fi
         if [ -n "$BIN_BAKED" ] && [ ! -x "$BIN_BAKED" ]; then
-            mkdir -p "$(dirname "$BIN_BAKED")" && ln -sf "$B/trazo" "$BIN_BAKED" && say "linked $BIN_BAKED -> $B/trazo"
+            if mkdir -p "$(dirname "$BIN_BAKED")" && ln -sf "$B/trazo" "$BIN_BAKED"; then say "linked $BIN_BAKED -> $B/trazo"
+            else say "WARNING: could not link $BIN_BAKED -> $B/trazo: the CLI tests will not find trazo"; fi
         fi
         # The git-ignored scene assets did not travel with the tree.
         for f in "$carry"/assets/*; do
