@@ -70,7 +70,7 @@ int runHeadlessRender(const CommandLine& options) {
 
     try {
         std::string why;
-        std::unique_ptr<Backend> backend = createBackend(options.backend, options.threads, why);
+        std::unique_ptr<Backend> backend = createBackendFor(flat.arrays, options.backend, options.threads, why);
         if (!backend) {
             std::fprintf(stderr, "trazo: cannot use the CUDA backend: %s\n", why.c_str());
             return 1;

@@ -3,6 +3,7 @@
 // answer the same queries alike (skipped without a device).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "backends/backend.h"
@@ -120,6 +121,24 @@ TEST_P(RayQueries, CudaBackendMatchesCpu) {
         EXPECT_LE(flipped, rays.size() / 2000) << (shadow ? "shadow" : "nearest") << " queries: hit/miss differs";
         EXPECT_LE(far, rays.size() / 2000) << "nearest queries: t differs by more than 1e-4 (relative)";
     }
+}
+
+// The stack both BVH levels share needs the top level's entries plus the neediest mesh's; every shipped scene
+// must fit the CUDA kernels' fixed stack (the upload refuses a scene that does not).
+TEST_P(RayQueries, TraversalStackNeedFitsTheDevice) {
+    const SceneArrays arrays = loadArrays(std::string("scenes/") + GetParam());
+    uint32_t meshNeed = 0;
+    for (size_t i = 0; i < arrays.meshes.size(); ++i) {
+        const size_t end = i + 1 < arrays.meshes.size() ? arrays.meshes[i + 1].nodeOffset : arrays.meshNodes.size();
+        const uint32_t first = arrays.meshes[i].nodeOffset;
+        meshNeed = std::max(meshNeed, wideBvhStackNeed(arrays.meshNodes.data() + first, end - first));
+    }
+    const uint32_t topNeed = wideBvhStackNeed(arrays.topNodes.data(), arrays.topNodes.size());
+    EXPECT_GT(topNeed, 0u);
+    EXPECT_EQ(arrays.traversalStackNeed, topNeed + meshNeed);
+    EXPECT_LE(arrays.traversalStackNeed, (uint32_t)kDeviceTraversalStackSize);
+    std::string why;
+    EXPECT_TRUE(createCpuBackend(1)->accepts(arrays, why)) << why;
 }
 
 INSTANTIATE_TEST_SUITE_P(SeedScenes, RayQueries,

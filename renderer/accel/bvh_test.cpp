@@ -364,6 +364,43 @@ std::vector<Ray> randomRays(uint32_t count, uint32_t seed, float originSpread, f
     return rays;
 }
 
+// The highest stack slot any traversal of `rays` writes, closest-hit and any-hit alike: slots start as a
+// sentinel that no node reference or leaf can equal.
+int stackHighWater(const TriangleBvh& scene, const std::vector<Ray>& rays) {
+    constexpr uint32_t kUntouched = kBvhEmptyLane;
+    std::vector<bvh_detail::StackEntry> closest(kBvhStackSize, {kUntouched, 0.0f});
+    std::vector<uint32_t> any(kBvhStackSize, kUntouched);
+    for (const Ray& ray : rays) {
+        ClosestStack c{closest.data(), kBvhStackSize, 0};
+        AnyStack a{any.data(), kBvhStackSize, 0};
+        float tMax = INFINITY;
+        traverseClosest(scene.nodes.data(), ray, 0.0f, tMax, c, [&](uint32_t, uint32_t, float&) { return false; });
+        traverseAny(scene.nodes.data(), ray, 0.0f, INFINITY, a, [&](uint32_t, uint32_t, float) { return false; });
+        EXPECT_EQ(c.size, 0);
+        EXPECT_EQ(a.size, 0);
+    }
+    int high = 0;
+    for (int i = 0; i < kBvhStackSize; ++i)
+        if (closest[i].ref != kUntouched || any[i] != kUntouched) high = i + 1;
+    return high;
+}
+
+// wideBvhStackNeed is what the CUDA upload checks against the kernels' fixed stack: no traversal may go past
+// it. Leaves that never hit make every ray visit every node it enters, the deepest use of the stack.
+TEST(BvhTraverse, StackNeedBoundsEveryTraversal) {
+    const TriangleBvh soup(randomTriangleSoup(3000, 50));
+    const TriangleBvh sphere(tessellateSphere({0, 0, 0}, 1.0f, 48, 96));
+    const TriangleBvh degenerate(concat(degenerateTriangles(2000, 51), randomTriangleSoup(300, 52)));
+    for (const TriangleBvh* scene : {&soup, &sphere, &degenerate}) {
+        const uint32_t need = wideBvhStackNeed(scene->nodes.data(), scene->nodes.size());
+        EXPECT_LE(need, 3 * wideBvhDepth(scene->nodes));
+        const int high = stackHighWater(*scene, randomRays(3000, 53, 2.0f, 1.0f));
+        EXPECT_LE(high, (int)need);
+        EXPECT_GE(high, (int)need / 4) << "the bound should be near what traversals use, not just safe";
+    }
+    EXPECT_EQ(wideBvhStackNeed(nullptr, 0), 0u);
+}
+
 TEST(BvhTraverse, ClosestMatchesBruteForceOnSoups) {
     for (uint32_t leaf : {1u, 4u}) {
         BvhBuildOptions options;

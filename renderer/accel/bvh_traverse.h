@@ -110,10 +110,48 @@ struct StackEntry {
     float tEntry;  // lets a popped node be skipped once a closer hit is known
 };
 
+}  // namespace bvh_detail
+
+// Entries of the traversal stack the two BVH levels share (a mesh's traversal continues above the top level's
+// entries). The host holds the bound of any pair of trees the builder makes; a GPU thread's stack lives in
+// local memory, so the device holds 64 entries and the upload refuses a scene whose trees need more
+// (traversalStackNeed).
+constexpr int kHostTraversalStackSize = 2 * kBvhStackSize;
+constexpr int kDeviceTraversalStackSize = 64;
+#if defined(__CUDA_ARCH__)
+constexpr int kTraversalStackSize = kDeviceTraversalStackSize;
+#else
+constexpr int kTraversalStackSize = kHostTraversalStackSize;
+#endif
+
+// A stack of pending children: closest-hit queries keep StackEntry, any-hit queries references only. A
+// traversal pushes above `size` and returns with `size` where it found it, so a traversal started from a
+// leaf function (a mesh inside the top level) shares the caller's stack: the caller publishes its size
+// before each leaf call. A push beyond `capacity` is dropped: the upload's check makes that unreachable,
+// the guard keeps memory safe regardless.
+template <typename Entry>
+struct TraversalStack {
+    Entry* entries;
+    int capacity;
+    int size;
+};
+
+namespace bvh_detail {
+template <typename Entry>
+TRAZO_HD void push(Entry* entries, int& size, int capacity, const Entry& e) {
+    if (size < capacity) entries[size++] = e;
+}
+}  // namespace bvh_detail
+
+using ClosestStack = TraversalStack<bvh_detail::StackEntry>;
+using AnyStack = TraversalStack<uint32_t>;
+
+namespace bvh_detail {
+
 // For closest-hit queries: orders the children in `mask` by entry distance, pushes all but the nearest
 // (the farthest deepest) and returns the nearest, or kBvhEmptyLane when `mask` holds only unused lanes.
 TRAZO_HD uint32_t pushFartherChildren(const WideBvhNode& node, unsigned mask, const float tEntry[kBvhWidth],
-                                      StackEntry* stack, int& size) {
+                                      StackEntry* stack, int& size, int capacity) {
     StackEntry hits[kBvhWidth];
     int count = 0;
     for (int lane = 0; lane < kBvhWidth; ++lane) {
@@ -124,18 +162,19 @@ TRAZO_HD uint32_t pushFartherChildren(const WideBvhNode& node, unsigned mask, co
         hits[i] = {node.child[lane], tEntry[lane]};
     }
     if (count == 0) return kBvhEmptyLane;
-    for (int i = 0; i < count - 1; ++i) stack[size++] = hits[i];
+    for (int i = 0; i < count - 1; ++i) push(stack, size, capacity, hits[i]);
     return hits[count - 1].ref;
 }
 
 // For any-hit queries: pushes the children in `mask` but the first in lane order, returns the first. Sorting
 // by distance, as closest-hit does, made shadow rays slower (bvh_bench: 1M-triangle sphere, 0.49x → 0.65x
 // of Embree), since any occluder will do.
-TRAZO_HD uint32_t pushLaterChildren(const WideBvhNode& node, unsigned mask, uint32_t* stack, int& size) {
+TRAZO_HD uint32_t pushLaterChildren(const WideBvhNode& node, unsigned mask, uint32_t* stack, int& size,
+                                    int capacity) {
     uint32_t first = kBvhEmptyLane;
     for (int lane = kBvhWidth - 1; lane >= 0; --lane) {
         if (!(mask & (1u << lane)) || node.child[lane] == kBvhEmptyLane) continue;
-        if (first != kBvhEmptyLane) stack[size++] = first;
+        if (first != kBvhEmptyLane) push(stack, size, capacity, first);
         first = node.child[lane];
     }
     return first;
@@ -147,10 +186,12 @@ TRAZO_HD uint32_t pushLaterChildren(const WideBvhNode& node, unsigned mask, uint
 // tMax on a closer hit and returns whether it hit. Returns whether any leaf hit; tMax is then the nearest t.
 // `nodes` must hold a non-empty BVH (a BVH over zero primitives has no root: skip it).
 template <class LeafFn>
-TRAZO_HD bool traverseClosest(const WideBvhNode* nodes, const Ray& ray, float tMin, float& tMax, LeafFn&& leaf) {
+TRAZO_HD bool traverseClosest(const WideBvhNode* nodes, const Ray& ray, float tMin, float& tMax, ClosestStack& stack,
+                              LeafFn&& leaf) {
     const bvh_detail::NodeRay nodeRay = bvh_detail::makeNodeRay(ray);
-    bvh_detail::StackEntry stack[kBvhStackSize];
-    int size = 0;
+    bvh_detail::StackEntry* const entries = stack.entries;
+    const int base = stack.size, capacity = stack.capacity;
+    int size = base;
     uint32_t ref = 0;
     bool hit = false;
     for (;;) {
@@ -160,16 +201,20 @@ TRAZO_HD bool traverseClosest(const WideBvhNode* nodes, const Ray& ray, float tM
             const unsigned mask = bvh_detail::intersectChildren(nodeRay, node, tMin, tMax, tEntry);
             if (mask) {
                 bvh_detail::prefetchChildren(nodes, node, mask);
-                ref = bvh_detail::pushFartherChildren(node, mask, tEntry, stack, size);
+                ref = bvh_detail::pushFartherChildren(node, mask, tEntry, entries, size, capacity);
                 if (ref != kBvhEmptyLane) continue;
             }
-        } else if (leaf(bvhLeafFirst(ref), bvhLeafCount(ref), tMax)) {
-            hit = true;
+        } else {
+            stack.size = size;  // a traversal the leaf starts continues above this one's entries
+            if (leaf(bvhLeafFirst(ref), bvhLeafCount(ref), tMax)) hit = true;
         }
         // Pop the nearest pending child that may still hold something closer than tMax.
         for (;;) {
-            if (size == 0) return hit;
-            const bvh_detail::StackEntry e = stack[--size];
+            if (size == base) {
+                stack.size = base;
+                return hit;
+            }
+            const bvh_detail::StackEntry e = entries[--size];
             if (e.tEntry <= tMax * kBoxExitScale) {
                 ref = e.ref;
                 break;
@@ -178,13 +223,23 @@ TRAZO_HD bool traverseClosest(const WideBvhNode* nodes, const Ray& ray, float tM
     }
 }
 
+// The same with a stack of its own.
+template <class LeafFn>
+TRAZO_HD bool traverseClosest(const WideBvhNode* nodes, const Ray& ray, float tMin, float& tMax, LeafFn&& leaf) {
+    bvh_detail::StackEntry entries[kBvhStackSize];
+    ClosestStack stack{entries, kBvhStackSize, 0};
+    return traverseClosest(nodes, ray, tMin, tMax, stack, leaf);
+}
+
 // Whether anything blocks the ray within (tMin, tMax). leaf(first, count, tMax) returns true as soon as one of
 // its primitives does; traversal stops there.
 template <class LeafFn>
-TRAZO_HD bool traverseAny(const WideBvhNode* nodes, const Ray& ray, float tMin, float tMax, LeafFn&& leaf) {
+TRAZO_HD bool traverseAny(const WideBvhNode* nodes, const Ray& ray, float tMin, float tMax, AnyStack& stack,
+                          LeafFn&& leaf) {
     const bvh_detail::NodeRay nodeRay = bvh_detail::makeNodeRay(ray);
-    uint32_t stack[kBvhStackSize];  // references only: no culling by distance, so half the closest-hit stack
-    int size = 0;
+    uint32_t* const entries = stack.entries;
+    const int base = stack.size, capacity = stack.capacity;
+    int size = base;
     uint32_t ref = 0;
     for (;;) {
         if (!bvhIsLeaf(ref)) {
@@ -193,15 +248,29 @@ TRAZO_HD bool traverseAny(const WideBvhNode* nodes, const Ray& ray, float tMin, 
             const unsigned mask = bvh_detail::intersectChildren(nodeRay, node, tMin, tMax, tEntry);
             if (mask) {
                 bvh_detail::prefetchChildren(nodes, node, mask);
-                ref = bvh_detail::pushLaterChildren(node, mask, stack, size);
+                ref = bvh_detail::pushLaterChildren(node, mask, entries, size, capacity);
                 if (ref != kBvhEmptyLane) continue;
             }
-        } else if (leaf(bvhLeafFirst(ref), bvhLeafCount(ref), tMax)) {
-            return true;
+        } else {
+            stack.size = size;  // a traversal the leaf starts continues above this one's entries
+            if (leaf(bvhLeafFirst(ref), bvhLeafCount(ref), tMax)) {
+                stack.size = base;
+                return true;
+            }
         }
-        if (size == 0) return false;
-        ref = stack[--size];
+        if (size == base) {
+            stack.size = base;
+            return false;
+        }
+        ref = entries[--size];
     }
+}
+
+template <class LeafFn>
+TRAZO_HD bool traverseAny(const WideBvhNode* nodes, const Ray& ray, float tMin, float tMax, LeafFn&& leaf) {
+    uint32_t entries[kBvhStackSize];  // references only: no culling by distance, so half the closest-hit stack
+    AnyStack stack{entries, kBvhStackSize, 0};
+    return traverseAny(nodes, ray, tMin, tMax, stack, leaf);
 }
 
 }  // namespace trazo

@@ -88,6 +88,21 @@ Aabb wideNodeBounds(const WideBvhNode& node) {
     return b;
 }
 
+uint32_t wideBvhStackNeed(const WideBvhNode* nodes, size_t count) {
+    // Depth first, the root at 0: every child follows its parent, so one backward sweep sees children first.
+    std::vector<uint32_t> need(count, 0);
+    for (size_t i = count; i-- > 0;) {
+        uint32_t children = 0, deepest = 0;
+        for (uint32_t ref : nodes[i].child) {
+            if (ref == kBvhEmptyLane) continue;
+            ++children;
+            if (!bvhIsLeaf(ref)) deepest = std::max(deepest, need[ref]);
+        }
+        need[i] = (children > 0 ? children - 1 : 0) + deepest;
+    }
+    return count ? need[0] : 0;
+}
+
 uint32_t wideBvhDepth(const std::vector<WideBvhNode>& nodes) {
     if (nodes.empty()) return 0;
     uint32_t deepest = 0;

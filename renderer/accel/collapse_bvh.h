@@ -18,6 +18,11 @@ std::vector<WideBvhNode> collapseBvh(const Bvh& bvh);
 // The union of a wide node's child boxes (for the root: the whole BVH's bounds).
 Aabb wideNodeBounds(const WideBvhNode& node);
 
+// The most entries a traversal of this BVH (nodes[0] its root, `count` nodes) keeps on its stack: each interior
+// node on the way down pushes the children it enters but one, so a node needs (children − 1) above what its
+// neediest interior child needs. Bounds traverseClosest and traverseAny alike; 0 for an empty BVH.
+uint32_t wideBvhStackNeed(const WideBvhNode* nodes, size_t count);
+
 // Depth of the deepest leaf below the root (a root with only leaf children: 1); 0 for an empty BVH.
 uint32_t wideBvhDepth(const std::vector<WideBvhNode>& nodes);
 

@@ -19,6 +19,12 @@ public:
     virtual std::string name() const = 0;        // "cpu" or "cuda"
     virtual std::string deviceName() const = 0;  // e.g. "2 threads" or "NVIDIA H100 80GB HBM3"
 
+    // Whether this backend's kernels can render the scene; when not, says why (the CUDA kernels hold a
+    // fixed traversal stack). upload() throws for a scene this refuses.
+    virtual bool accepts(const SceneArrays& arrays, std::string& why) const {
+        (void)arrays, (void)why;
+        return true;
+    }
     // Copies the flattened scene into backend memory (replacing any previous one).
     virtual void upload(const SceneArrays& arrays) = 0;
     // The same for a caller that no longer needs the arrays: a backend that renders from host memory takes
@@ -59,6 +65,9 @@ enum class BackendChoice { Auto, Cpu, Cuda };
 // threads = 0: all hardware threads. On failure returns null and says why in `error`
 // (e.g. CUDA requested but not built, or no device). Auto falls back to the CPU.
 std::unique_ptr<Backend> createBackend(BackendChoice choice, unsigned threads, std::string& error);
+// The same for one scene: a backend that does not accept it (Backend::accepts) counts as unavailable.
+std::unique_ptr<Backend> createBackendFor(const SceneArrays& arrays, BackendChoice choice, unsigned threads,
+                                          std::string& error);
 
 std::unique_ptr<Backend> createCpuBackend(unsigned threads);
 

@@ -33,4 +33,12 @@ std::unique_ptr<Backend> createBackend(BackendChoice choice, unsigned threads, s
     return createCpuBackend(threads);
 }
 
+std::unique_ptr<Backend> createBackendFor(const SceneArrays& arrays, BackendChoice choice, unsigned threads,
+                                          std::string& error) {
+    std::unique_ptr<Backend> backend = createBackend(choice, threads, error);
+    if (!backend || backend->accepts(arrays, error)) return backend;
+    if (choice == BackendChoice::Auto) return createCpuBackend(threads);
+    return nullptr;
+}
+
 }  // namespace trazo

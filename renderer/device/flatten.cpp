@@ -146,6 +146,16 @@ void buildTopLevel(SceneArrays& out) {
     out.topNodes = collapseBvh(bvh);
 }
 
+uint32_t traversalStackNeed(const SceneArrays& a) {
+    uint32_t meshNeed = 0;
+    for (size_t i = 0; i < a.meshes.size(); ++i) {
+        const size_t end = i + 1 < a.meshes.size() ? a.meshes[i + 1].nodeOffset : a.meshNodes.size();
+        const uint32_t first = a.meshes[i].nodeOffset;
+        meshNeed = std::max(meshNeed, wideBvhStackNeed(a.meshNodes.data() + first, end - first));
+    }
+    return wideBvhStackNeed(a.topNodes.data(), a.topNodes.size()) + meshNeed;
+}
+
 }  // namespace
 
 void areaLightAxes(Vec3 normal, float rollAngle, Vec3& u, Vec3& v) {
@@ -193,6 +203,7 @@ FlattenResult flatten(const Scene& scene) {
                                          " has no texture coordinates: the material's textures are ignored on it");
     }
     buildTopLevel(out);
+    out.traversalStackNeed = traversalStackNeed(out);
     if (!materials.defaultUsed) materials.data.pop_back();
     out.materials = std::move(materials.data);
     flattenTextures(scene, out);

@@ -85,6 +85,9 @@ struct SceneArrays {
 #undef TRAZO_X
     RenderSettings settings{};
     FeatureMask features = 0;
+    // Entries of the traversal stack the two BVH levels need together (the top level's need plus the
+    // neediest mesh's): a backend whose kernels hold fewer refuses the scene at upload.
+    uint32_t traversalStackNeed = 0;
 };
 
 template <typename T>
