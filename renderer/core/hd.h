@@ -3,8 +3,8 @@
 
 #if defined(__CUDACC__)
 #define TRAZO_HD __host__ __device__ __forceinline__
-#define TRAZO_DEVICE_COMPILE 1
+#define TRAZO_HD_CALL __host__ __device__ __noinline__
 #else
 #define TRAZO_HD inline
-#define TRAZO_DEVICE_COMPILE 0
+#define TRAZO_HD_CALL inline
 #endif

@@ -40,13 +40,25 @@ struct CsgShape {
 
 struct CsgEndpoint {
     float t;
-    uint16_t leaf;     // node index (within the object) whose surface this is
-    uint16_t flipped;  // 1 when the surface bounds a subtracted part: its outward normal is reversed
+    uint8_t leaf;     // node index (within the object, < 2·kCsgMaxLeaves) whose surface this is
+    uint8_t flipped;  // 1 when the surface bounds a subtracted part: its outward normal is reversed
 };
 
+// Two endpoints in 12 bytes rather than two padded CsgEndpoints' 16: the pool is most of a GPU thread's
+// stack frame when a scene has CSG solids.
 struct CsgInterval {
-    CsgEndpoint entry, exit;
+    float t[2];  // [0] = entry, [1] = exit
+    uint8_t leaf[2], flipped[2];
+
+    TRAZO_HD CsgEndpoint endpoint(int side) const { return CsgEndpoint{t[side], leaf[side], flipped[side]}; }
+    TRAZO_HD void set(int side, const CsgEndpoint& e) {
+        t[side] = e.t;
+        leaf[side] = e.leaf;
+        flipped[side] = e.flipped;
+    }
 };
+static_assert(sizeof(CsgInterval) == 12, "CsgInterval should pack two endpoints into 12 bytes");
+static_assert(2 * kCsgMaxLeaves - 1 <= 255, "a CSG node index must fit CsgEndpoint::leaf");
 
 // The canonical shape's interval along an object-space ray: false when the line misses it.
 TRAZO_HD bool csgLeafInterval(CsgLeafShape shape, const Ray& rayObject, float& t0, float& t1) {
@@ -103,15 +115,15 @@ TRAZO_HD int csgCombine(CsgOp op, const CsgInterval* left, int leftCount, const 
     // Each list contributes its endpoints in order: entry_k, exit_k, entry_k+1, …
     int li = 0, ri = 0;  // endpoint cursors (2 per interval)
     while (li < 2 * leftCount || ri < 2 * rightCount) {
-        const float tl = li < 2 * leftCount ? (li % 2 ? left[li / 2].exit.t : left[li / 2].entry.t) : INFINITY;
-        const float tr = ri < 2 * rightCount ? (ri % 2 ? right[ri / 2].exit.t : right[ri / 2].entry.t) : INFINITY;
+        const float tl = li < 2 * leftCount ? left[li / 2].t[li % 2] : INFINITY;
+        const float tr = ri < 2 * rightCount ? right[ri / 2].t[ri % 2] : INFINITY;
         CsgEndpoint e;
         if (tl <= tr) {
-            e = li % 2 ? left[li / 2].exit : left[li / 2].entry;
+            e = left[li / 2].endpoint(li % 2);
             inLeft = !(li % 2);
             ++li;
         } else {
-            e = ri % 2 ? right[ri / 2].exit : right[ri / 2].entry;
+            e = right[ri / 2].endpoint(ri % 2);
             if (op == CsgOp::Difference) e.flipped ^= 1;
             inRight = !(ri % 2);
             ++ri;
@@ -122,10 +134,10 @@ TRAZO_HD int csgCombine(CsgOp op, const CsgInterval* left, int leftCount, const 
         // Coplanar faces: an interval that starts where the previous one ended continues it (two boxes
         // sharing a face are one solid), and an interval of zero length is no solid at all.
         if (now) {
-            if (n > 0 && out[n - 1].exit.t >= e.t) --n;
-            else out[n].entry = e;
-        } else if (e.t > out[n].entry.t) {
-            out[n++].exit = e;
+            if (n > 0 && out[n - 1].t[1] >= e.t) --n;
+            else out[n].set(0, e);
+        } else if (e.t > out[n].t[0]) {
+            out[n++].set(1, e);
         }
     }
     return n;
@@ -149,20 +161,21 @@ TRAZO_HD bool slabHit(Vec3 boundsMin, Vec3 boundsMax, const Ray& ray, float tMax
 }
 
 // Nearest surface of the solid with tMin < t < tMax and its outward normal (world space).
-TRAZO_HD bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, const Ray& ray, float tMin, float tMax,
+TRAZO_HD_CALL bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, const Ray& ray, float tMin, float tMax,
                            ShapeHit& hit) {
     CsgInterval pool[2 * kCsgMaxLeaves];
-    int listStart[kCsgMaxLeaves + 1], listCount[kCsgMaxLeaves + 1];
+    // Bytes: every start, count and node index is below 2·kCsgMaxLeaves (less stack on a GPU thread).
+    uint8_t listStart[kCsgMaxLeaves + 1], listCount[kCsgMaxLeaves + 1];
     int lists = 0, used = 0;
     for (uint32_t k = 0; k < csg.nodeCount; ++k) {
         const CsgNodeData& node = nodes[csg.firstNode + k];
         if (node.op == CsgOp::Leaf) {
             // A leaf starts the sub-trees of the ancestors it is the leftmost leaf of. The outermost one
             // whose bounds the ray misses yields an empty list and is skipped whole.
-            uint32_t chain[kCsgMaxLeaves + 1];
+            uint8_t chain[kCsgMaxLeaves + 1];
             int chainLength = 0;
             for (uint32_t n = k;; n = nodes[csg.firstNode + n].parent) {
-                chain[chainLength++] = n;
+                chain[chainLength++] = (uint8_t)n;
                 const CsgNodeData& c = nodes[csg.firstNode + n];
                 if (c.parent == n || !c.isLeftChild || chainLength > kCsgMaxLeaves) break;
             }
@@ -174,7 +187,7 @@ TRAZO_HD bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, const 
                     break;
                 }
             }
-            listStart[lists] = used;
+            listStart[lists] = (uint8_t)used;
             listCount[lists] = 0;
             if (skippedRoot != 0xffffffffu) {
                 ++lists;
@@ -184,7 +197,7 @@ TRAZO_HD bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, const 
             const Ray rayObject{node.objectFromWorld.applyToPoint(ray.origin), node.objectFromWorld.applyToVector(ray.direction)};
             float t0, t1;
             if (csgLeafInterval(node.shape, rayObject, t0, t1)) {
-                pool[used++] = CsgInterval{{t0, (uint16_t)k, 0}, {t1, (uint16_t)k, 0}};
+                pool[used++] = CsgInterval{{t0, t1}, {(uint8_t)k, (uint8_t)k}, {0, 0}};
                 listCount[lists] = 1;
             }
             ++lists;
@@ -196,13 +209,13 @@ TRAZO_HD bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, const 
         const int n = csgCombine(node.op, pool + listStart[left], listCount[left], pool + listStart[right],
                                  listCount[right], scratch);
         for (int i = 0; i < n; ++i) pool[listStart[left] + i] = scratch[i];
-        listCount[left] = n;
+        listCount[left] = (uint8_t)n;
         used = listStart[left] + n;
     }
     // The root's list: the first endpoint inside the window, entry or (from inside) exit.
     for (int i = 0; i < listCount[0]; ++i) {
         for (int side = 0; side < 2; ++side) {
-            const CsgEndpoint& e = side == 0 ? pool[i].entry : pool[i].exit;
+            const CsgEndpoint e = pool[i].endpoint(side);
             if (!(e.t > tMin && e.t < tMax)) continue;
             const CsgNodeData& leaf = nodes[csg.firstNode + e.leaf];
             const Vec3 pObject = leaf.objectFromWorld.applyToPoint(pointAt(ray, e.t));

@@ -15,14 +15,17 @@ namespace trazo {
 
 constexpr int kMaxPendingRays = 32;                 // a branch that would overflow contributes 0
 constexpr uint32_t kMaxTransmissionSegments = 16;   // SPEC §5: longer chains contribute 0
+constexpr uint32_t kMaxReflectionDepth = (1u << 27) - 1;  // what PendingRay::reflectionDepth holds
 
 struct PendingRay {
     Ray ray;
     Vec3 weight;
-    uint32_t reflectionDepth;
-    uint32_t segments;  // transmission segments in the current chain
-    uint32_t node;      // identifies this ray in the pixel's sample tree (decorrelates its strata)
+    uint32_t reflectionDepth : 27;  // ≤ kMaxReflectionDepth, which bounds ReflectionSteps
+    uint32_t segments : 5;          // transmission segments in the current chain (≤ kMaxTransmissionSegments)
+    uint32_t node;                  // identifies this ray in the pixel's sample tree (decorrelates its strata)
 };
+static_assert(sizeof(PendingRay) == 44, "pending rays are a GPU thread's largest array: keep them packed");
+static_assert(kMaxTransmissionSegments < 32, "PendingRay::segments has 5 bits");
 
 // Antialiasing position s of the k×k sub-pixel centres (SPEC §5 Pixel).
 TRAZO_HD void antialiasingPosition(uint32_t k, uint32_t s, uint32_t px, uint32_t py, float& x, float& y) {
@@ -32,7 +35,7 @@ TRAZO_HD void antialiasingPosition(uint32_t k, uint32_t s, uint32_t px, uint32_t
 
 TRAZO_HD bool materialReflects(const MaterialData& m, const RenderSettings& s, uint32_t depth) {
     return !isBlack(m.specular) && m.reflectionAmount > 0.0f && m.opacity > 0.0f && s.reflectionQuality >= 1 &&
-           depth < s.reflectionSteps;
+           depth < s.reflectionSteps && depth < kMaxReflectionDepth;
 }
 
 // The reflected direction of this pass: the mirror direction, or one jittered stratum of the glossy cone
@@ -93,27 +96,22 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
             Vec3 out;
             if (!refractDirection(d, nInside, m.refractionIndex, out)) out = reflectDirection(d, nInside);
             push(PendingRay{Ray{offsetRayOrigin(p, pError, surface.ng, out), out}, r.weight, r.reflectionDepth,
-                            r.segments + 1, hashCombine(r.node, 3)});
+                            r.segments + 1u, hashCombine(r.node, 3)});
             continue;
         }
 
         const ShadingPoint sp = facingShadingPoint(p, pError, d, surface);
         const StrataKey strata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass, r.node};
 
+        // The reflected and transmitted rays go on the stack before this point is shaded, so that nothing but
+        // the colour's weight stays live across the shadow and indirect rays (on a GPU, registers decide how
+        // many threads run at once).
         const float a = kReflection && materialReflects(m, settings, r.reflectionDepth) ? m.reflectionAmount : 0.0f;
-        const float directWeight = (1.0f - a) * m.opacity;  // 0 for pure mirrors and clear glass: no shadow rays
-        Vec3 local(0.0f);
-        if (directWeight > 0.0f) {
-            local = directLight<F>(scene, sp, m, strata, blocks.areaLight, 0u, rng, rays);
-            if constexpr (kIndirect) local += indirectLight<F>(scene, sp, m, strata, blocks, rng, rays);
-        }
-        color += r.weight * (local * directWeight + m.emissive);
-
         if (kReflection && a > 0.0f) {
             const Vec3 dir = sampleReflection(sp, d, m, settings.reflectionQuality, strata, rng);
             if (dot(dir, sp.ng) > 0.0f) {  // directions below the geometric surface contribute 0
                 push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, r.weight * m.specular * (a * m.opacity),
-                                r.reflectionDepth + 1, 0u, hashCombine(r.node, 1)});
+                                r.reflectionDepth + 1u, 0u, hashCombine(r.node, 1)});
             }
         }
         if (kRefraction && m.opacity < 1.0f && r.segments < kMaxTransmissionSegments) {
@@ -121,7 +119,14 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
             Vec3 dir;
             if (!refractDirection(d, sp.n, 1.0f / m.refractionIndex, dir)) dir = reflectDirection(d, sp.n);
             push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, r.weight * (1.0f - m.opacity),
-                            r.reflectionDepth, r.segments + 1, hashCombine(r.node, 2)});
+                            r.reflectionDepth, r.segments + 1u, hashCombine(r.node, 2)});
+        }
+        color += r.weight * m.emissive;
+        const float directWeight = (1.0f - a) * m.opacity;  // 0 for pure mirrors and clear glass: no shadow rays
+        if (directWeight > 0.0f) {
+            Vec3 local = directLight<F>(scene, sp, m, strata, blocks.areaLight, 0u, rng, rays);
+            if constexpr (kIndirect) local += indirectLight<F>(scene, sp, m, strata, blocks, rng, rays);
+            color += r.weight * (local * directWeight);
         }
     }
     return color;

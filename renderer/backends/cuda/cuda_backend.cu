@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "backends/backend.h"
-#include "integrator/sample_variants.h"
+#include "backends/cuda/render_pass_launch.h"
 
 namespace trazo {
 
@@ -19,12 +19,6 @@ void destroyCudaGlDisplay(CudaGlDisplay* display);
 void releaseCudaGlDisplay(CudaGlDisplay& display);
 bool resolveIntoGlBuffer(CudaGlDisplay& display, unsigned glBuffer, const AccumPixel* accum, uint32_t width,
                          uint32_t height, std::string& why);
-
-// One launcher per specialised variant of the render-pass kernel, each compiled in its own translation unit
-// (render_pass_variants_*.cu) so a build compiles the variants on every core.
-template <FeatureMask F>
-void launchRenderPass(dim3 grid, dim3 block, const SceneView& scene, const FrameParams& frame, uint32_t pass,
-                      AccumPixel* accum, unsigned long long* rayCounter);
 
 namespace {
 
@@ -97,10 +91,6 @@ struct EventTimer {
     EventTimer& operator=(const EventTimer&) = delete;
 };
 
-// Passes launch in 16×16 blocks: whole warps, as the kernel's warp-shuffle ray count needs.
-constexpr unsigned kPassBlockX = 16, kPassBlockY = 16;
-static_assert((kPassBlockX * kPassBlockY) % 32 == 0, "renderPassKernel's ray count shuffles over full warps");
-
 // TRAZO_CUDA_SYNC_EVERY_PASS=1: wait for each pass, so a kernel fault names its pass instead of the batch's.
 bool syncEveryPass() {
     const char* value = std::getenv("TRAZO_CUDA_SYNC_EVERY_PASS");
@@ -146,7 +136,15 @@ public:
 
     // Arrays equal to the ones already on the device are not copied again (an edited material re-sends
     // the materials, not the meshes).
+    bool accepts(const SceneArrays& a, std::string& why) const override {
+        if (a.traversalStackNeed <= (uint32_t)kDeviceTraversalStackSize) return true;
+        why = "the scene's BVHs need a traversal stack of " + std::to_string(a.traversalStackNeed) +
+              " entries and the CUDA kernels hold " + std::to_string(kDeviceTraversalStackSize);
+        return false;
+    }
     void upload(const SceneArrays& a) override {
+        std::string why;
+        if (!accepts(a, why)) throw std::runtime_error(why);
 #define TRAZO_X(T, name)        \
     device_.name.assign(a.name); \
     view_.name = device_.name.view();

@@ -2,14 +2,18 @@
 // translation units render_pass_variants_*.cu: each instantiates four of the 16 specialised variants.
 #pragma once
 
-#include <cuda_runtime.h>
-
-#include "integrator/sample_variants.h"
+#include "backends/cuda/render_pass_launch.h"
 
 namespace trazo {
 
+// Two blocks per SM: at most 128 registers a thread, 16 warps an SM (an H100 holds 64K registers an SM).
+// TRAZO_CUDA_PASS_MIN_BLOCKS=1 (CMake) lifts the cap, for timing the trade on a GPU.
+#if !defined(TRAZO_CUDA_PASS_MIN_BLOCKS)
+#define TRAZO_CUDA_PASS_MIN_BLOCKS 2
+#endif
+
 template <FeatureMask F>
-__global__ void renderPassKernel(SceneView scene, FrameParams frame, uint32_t pass, AccumPixel* accum,
+__global__ void __launch_bounds__(kPassBlockX* kPassBlockY, TRAZO_CUDA_PASS_MIN_BLOCKS) renderPassKernel(SceneView scene, FrameParams frame, uint32_t pass, AccumPixel* accum,
                                  unsigned long long* rayCounter) {
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
@@ -23,7 +27,7 @@ __global__ void renderPassKernel(SceneView scene, FrameParams frame, uint32_t pa
     if ((threadIdx.x + threadIdx.y * blockDim.x) % 32 == 0 && rays) atomicAdd(rayCounter, (unsigned long long)rays);
 }
 
-// Host-side launchers, one per specialised variant, in the table both backends share.
+// The launchers render_pass_launch.h declares.
 template <FeatureMask F>
 void launchRenderPass(dim3 grid, dim3 block, const SceneView& scene, const FrameParams& frame, uint32_t pass,
                       AccumPixel* accum, unsigned long long* rayCounter) {
