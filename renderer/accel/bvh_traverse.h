@@ -6,7 +6,7 @@
 #include "accel/ray_box.h"
 #include "accel/wide_bvh_node.h"
 
-#if !defined(__CUDA_ARCH__) && defined(__SSE2__)
+#if !TRAZO_DEVICE_PATHS && defined(__SSE2__)
 #include <emmintrin.h>
 #define TRAZO_BVH_SSE 1
 #else
@@ -118,7 +118,7 @@ struct StackEntry {
 // (traversalStackNeed).
 constexpr int kHostTraversalStackSize = 2 * kBvhStackSize;
 constexpr int kDeviceTraversalStackSize = 64;
-#if defined(__CUDA_ARCH__)
+#if TRAZO_DEVICE_PATHS
 constexpr int kTraversalStackSize = kDeviceTraversalStackSize;
 #else
 constexpr int kTraversalStackSize = kHostTraversalStackSize;

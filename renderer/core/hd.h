@@ -1,10 +1,22 @@
 // The one macro that makes a function callable from host code and from CUDA kernels.
 #pragma once
 
+// TRAZO_HD_CALL: a function the device calls rather than inlines, where a large, rarely taken body (a CSG
+// solid) would otherwise crowd every call site's registers. Still `inline` for the linker: headers define it.
 #if defined(__CUDACC__)
 #define TRAZO_HD __host__ __device__ __forceinline__
-#define TRAZO_HD_CALL __host__ __device__ __noinline__
+#define TRAZO_HD_CALL __host__ __device__ __noinline__ inline
 #else
 #define TRAZO_HD inline
 #define TRAZO_HD_CALL inline
+#endif
+
+// 1 where kernel code takes the device's paths (lane loops instead of SSE, run-time triangle axes, the device's
+// stack sizes, branch-free BRDFs): in CUDA device compilation, and in a host build with
+// TRAZO_EMULATE_DEVICE_PATHS, which runs those paths on the CPU so CI tests them (trazo_device_paths). Only
+// what needs CUDA itself (intrinsics) stays behind __CUDA_ARCH__.
+#if defined(__CUDA_ARCH__) || defined(TRAZO_EMULATE_DEVICE_PATHS)
+#define TRAZO_DEVICE_PATHS 1
+#else
+#define TRAZO_DEVICE_PATHS 0
 #endif

@@ -23,14 +23,14 @@ struct Vec3 {
 // min and max of two floats without libm's NaN rules: on the host fminf/fmaxf are calls unless
 // -ffinite-math-only; a comparison is one minss/maxss. A NaN argument gives the second operand.
 TRAZO_HD float minOf(float a, float b) {
-#if defined(__CUDA_ARCH__)
+#if TRAZO_DEVICE_PATHS
     return fminf(a, b);
 #else
     return a < b ? a : b;
 #endif
 }
 TRAZO_HD float maxOf(float a, float b) {
-#if defined(__CUDA_ARCH__)
+#if TRAZO_DEVICE_PATHS
     return fmaxf(a, b);
 #else
     return a > b ? a : b;

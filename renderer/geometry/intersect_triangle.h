@@ -92,7 +92,7 @@ TRAZO_HD bool intersectSheared(const TriangleRay& r, Sheared a, Sheared b, Shear
     return true;
 }
 
-#if !defined(__CUDA_ARCH__)
+#if !TRAZO_DEVICE_PATHS
 // Host: the axes as compile-time constants, so the vertices are read without selecting components.
 template <int KZ>
 inline bool intersectAlong(const TriangleRay& r, Vec3 p0, Vec3 p1, Vec3 p2, float tMin, float tMax, TriangleHit& hit) {
@@ -114,7 +114,7 @@ inline bool intersectAlong(const TriangleRay& r, Vec3 p0, Vec3 p1, Vec3 p2, floa
 // Two-sided hit with tMin < t < tMax. Degenerate (zero-area) triangles and rays in the triangle's plane miss.
 TRAZO_HD bool intersectTriangle(const TriangleRay& r, Vec3 p0, Vec3 p1, Vec3 p2, float tMin, float tMax,
                                 TriangleHit& hit) {
-#if defined(__CUDA_ARCH__)
+#if TRAZO_DEVICE_PATHS
     // Device: components picked at run time (selects); a switch on kz would diverge across incoherent rays.
     const Vec3 a = p0 - r.origin, b = p1 - r.origin, c = p2 - r.origin;
     return triangle_detail::intersectSheared(r, triangle_detail::shear(a[r.kx], a[r.ky], a[r.kz], r),

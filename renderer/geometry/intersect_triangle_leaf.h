@@ -8,7 +8,7 @@
 #include "geometry/intersect_triangle.h"
 #include "geometry/mesh_shape.h"
 
-#if !defined(__CUDA_ARCH__) && defined(__SSE2__)
+#if !TRAZO_DEVICE_PATHS && defined(__SSE2__)
 #include <emmintrin.h>
 #define TRAZO_TRIANGLE_SSE 1
 #else

@@ -16,13 +16,13 @@ struct ShadingPoint {
     Vec3 n;        // shading normal turned towards the viewer
     Vec3 v;        // towards the viewer
     float offset;  // offsetDistance of p's error bound along ng
-#if !defined(__CUDA_ARCH__)
+#if !TRAZO_DEVICE_PATHS
     Vec3 above;  // host: offsetRayOrigin towards +ng, where nearly every shadow and indirect ray leaves
 #endif
 
     TRAZO_HD ShadingPoint(Vec3 pIn, Vec3 pError, Vec3 ngIn, Vec3 nIn, Vec3 vIn)
         : p(pIn), ng(ngIn), n(nIn), v(vIn), offset(offsetDistance(pError, ngIn)) {
-#if !defined(__CUDA_ARCH__)
+#if !TRAZO_DEVICE_PATHS
         above = bumpedOrigin(p, ng * offset);
 #endif
     }
@@ -30,7 +30,7 @@ struct ShadingPoint {
     // registers are scarcer than its arithmetic (ptxas: caching it cost up to 12 registers a kernel).
     TRAZO_HD Vec3 rayOrigin(Vec3 towards) const {
         const bool below = dot(towards, ng) < 0.0f;
-#if !defined(__CUDA_ARCH__)
+#if !TRAZO_DEVICE_PATHS
         if (!below) return above;
 #endif
         return bumpedOrigin(p, below ? -(ng * offset) : ng * offset);
@@ -45,13 +45,13 @@ struct PointBrdf {
     const ShadingPoint& sp;
     const MaterialData& m;
     bool hasDiffuse, hasSpecular;
-#if !defined(__CUDA_ARCH__)
+#if !TRAZO_DEVICE_PATHS
     OrenNayarView diffuseView;
 #endif
 
     TRAZO_HD PointBrdf(const ShadingPoint& spIn, const MaterialData& mIn)
         : sp(spIn), m(mIn), hasDiffuse(!isBlack(mIn.diffuse)), hasSpecular(!isBlack(mIn.specular)) {
-#if !defined(__CUDA_ARCH__)
+#if !TRAZO_DEVICE_PATHS
         diffuseView = orenNayarView(sp.n, sp.v, m.roughness);
 #endif
     }
@@ -60,7 +60,7 @@ struct PointBrdf {
     // Kd·ON(N, L, V, σ) + Ks·CT(N, L, V, σ); N·L > 0 and N·V > 0 assumed.
     TRAZO_HD Vec3 eval(Vec3 l) const {
         Vec3 f(0.0f);
-#if !defined(__CUDA_ARCH__)
+#if !TRAZO_DEVICE_PATHS
         if (hasDiffuse) f = m.diffuse * evalOrenNayar(diffuseView, sp.n, l);
         if (hasSpecular) f += m.specular * evalCookTorrance(sp.n, l, sp.v, m.roughness);
 #else  // both lobes, branch-free: a black one adds 0

@@ -21,7 +21,7 @@ TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, cons
     if (q == 0 || !(settings.colorBleeding > 0.0f) || isBlack(m.diffuse) || dot(sp.n, sp.v) <= 0.0f) return Vec3(0.0f);
     const StrataBlock directions = strata.block(kGridIndirect, 2 * q * q, blocks.indirect);
     const StrataKey atQ = strata.child(kBranchIndirect);
-#if !defined(__CUDA_ARCH__)
+#if !TRAZO_DEVICE_PATHS
     const OrenNayarView view = orenNayarView(sp.n, sp.v, m.roughness);  // the device: per direction, as PointBrdf
 #endif
     Vec3 sum(0.0f);
@@ -41,7 +41,7 @@ TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, cons
         applyTextures(scene, mq, sq);
         const ShadingPoint spq = facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), w, sq);
         const Vec3 arriving = directLight<F>(scene, spq, mq, atQ, blocks.lightAtIndirect, j, rng, rays) + mq.emissive;
-#if !defined(__CUDA_ARCH__)
+#if !TRAZO_DEVICE_PATHS
         sum += m.diffuse * evalOrenNayar(view, sp.n, w) * arriving;
 #else
         sum += m.diffuse * evalOrenNayar(sp.n, w, sp.v, m.roughness) * arriving;
