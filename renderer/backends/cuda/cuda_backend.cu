@@ -52,28 +52,41 @@ public:
 
     // Copies `host` to the device unless it equals what was copied last time.
     void assign(const std::vector<T>& host) {
-        if (host.size() == shadow_.size() &&
+        if (known_ && host.size() == shadow_.size() &&
             (host.empty() || std::memcmp(host.data(), shadow_.data(), host.size() * sizeof(T)) == 0))
             return;
-        if (host.size() > capacity_) {
-            // The new block first: if it cannot be had, the array (and every view of it) keeps the old one.
-            T* fresh = nullptr;
-            TRAZO_CUDA_CHECK(cudaMalloc(&fresh, host.size() * sizeof(T)));
-            cudaFree(data_);
-            data_ = fresh;
-            capacity_ = host.size();
-        }
+        reserve(host.size());
         count_ = host.size();
         if (count_) TRAZO_CUDA_CHECK(cudaMemcpy(data_, host.data(), count_ * sizeof(T), cudaMemcpyHostToDevice));
         shadow_ = host;
+        known_ = true;
+    }
+    // Room for `count` elements the device will write (an output): nothing is copied, and the contents are
+    // no longer known here, so the next assign() copies whatever it is given.
+    void resizeForOutput(size_t count) {
+        reserve(count);
+        count_ = count;
+        shadow_.clear();
+        known_ = false;
     }
     ArrayView<T> view() const { return ArrayView<T>{data_, (uint32_t)count_}; }
     T* data() const { return data_; }
 
 private:
+    // The new block first: if it cannot be had, the array (and every view of it) keeps the old one.
+    void reserve(size_t count) {
+        if (count <= capacity_) return;
+        T* fresh = nullptr;
+        TRAZO_CUDA_CHECK(cudaMalloc(&fresh, count * sizeof(T)));
+        cudaFree(data_);
+        data_ = fresh;
+        capacity_ = count;
+    }
+
     T* data_ = nullptr;
     size_t count_ = 0, capacity_ = 0;
-    std::vector<T> shadow_;  // host copy of the device contents
+    std::vector<T> shadow_;  // host copy of the device contents, when known_
+    bool known_ = true;
 };
 
 // A pair of CUDA events for timing a launch.
@@ -202,7 +215,7 @@ public:
         out.assign(queries.size(), 0.0f);
         if (queries.empty()) return 0.0;
         queries_.assign(queries);
-        answers_.assign(out);
+        answers_.resizeForOutput(queries.size());  // every answer is written by the kernel: nothing to upload
         const uint32_t count = (uint32_t)queries.size();
         constexpr uint32_t kBlock = 128;
         const EventTimer timer;
