@@ -11,12 +11,13 @@
 #   nvidia-smi.txt    nvidia-smi, its CSV query and the start of nvidia-smi -q
 #   cuda_tests.log    trazo_tests on the CUDA suites
 #   memcheck.log      compute-sanitizer memcheck of small renders of five seed scenes
-#   scene_timings.md  every seed scene on CUDA beside the CPU and the thesis's GTX 560, and their image error
+#   scene_timings.md  every seed scene on CUDA beside the CPU and the thesis's GTX 560, and their image error;
+#                     then the register cap's trade (register_cap)
 #   bvh_bench.txt     bvh_bench, with its GPU line (kernel time of primary, shadow and random rays)
 #   artifacts.tar.gz  stats JSONs, the timings CSV, the test XML, the smoke image
 # Steps, cheap and important first, each under its own timeout and all under GPU_CHECK_BUDGET seconds
 # (default 450, so the whole script stays under 8 minutes): nvidia_smi, cuda_render, egl_interop,
-# cuda_tests, bvh_bench, scene_timings, memcheck. Without a GPU (no nvidia-smi, or it lists none) or without
+# cuda_tests, bvh_bench, scene_timings, memcheck, register_cap. Without a GPU (no nvidia-smi, or it lists none) or without
 # the carry folder every step is skipped with its reason and the script exits 0; with them, it exits 1 if a
 # step failed.
 # Environment: OUT, GPU_CARRY (default <repo>/gpu-carry), GPU_CHECK_BUDGET, GPU_CHECK_ONLY="step,step"
@@ -407,6 +408,45 @@ if step memcheck gpu carry; then
         elif (( bad > 0 )); then
             record memcheck failed "64x48, 2 passes:$res [$errs] $(grep -m3 -E '^========= +(Invalid|Out of|Program hit|Leaked)' "$f" | tr '\n' ' ' || true)"
         else record memcheck ran "64x48, 2 passes, no errors$( (( slow == 0 )) || echo ", $slow timed out under the sanitizer (no verdict)"):$res [$errs]"; fi
+    fi
+fi
+
+# --- register_cap: the render kernels at 128 registers (16 warps an SM, some spills) against uncapped ---------
+# trazo is built with __launch_bounds__ for two 256-thread blocks an SM; trazo_uncapped (TRAZO_CUDA_PASS_MIN_BLOCKS=1)
+# lets ptxas take up to 255 registers (8 warps, no spills). Same scenes, passes and seed: the faster build says
+# which budget scripts/kernel_resources.sh should hold.
+if step register_cap gpu carry; then
+    if [ ! -x "$B/trazo_uncapped" ]; then
+        record register_cap skipped "no trazo_uncapped in the carry folder (rerun scripts/gpu_prepare.sh)"
+    else
+        md=$OUT/scene_timings.md
+        {
+            echo
+            echo "## Register cap: 128 registers (16 warps an SM) against uncapped (8 warps), 512², 32 passes, seed 1"
+            echo
+            echo "| scene | variant bits | capped s | uncapped s | uncapped / capped |"
+            echo "|---|---|---|---|---|"
+        } >>"$md"
+        res="" bad=0
+        step_end=$(( $(date +%s) + $(cap 90) ))
+        for s in scene1_area scene3_csg_area scene5_bunny_reflect scene7_refract scene9_indirect scene10_bunny_indirect_area extra1_refract_indirect; do
+            times=()
+            for bin in trazo trazo_uncapped; do
+                left=$(( step_end - $(date +%s) ))
+                if (( left < 5 )); then times+=(""); continue; fi
+                rc=0
+                limited "$(( left < 30 ? left : 30 ))" "$log" "$B/$bin" --render "scenes/$s.scene" --backend cuda --width 512 \
+                    --height 512 --spp 32 --seed 1 --quiet -o "$work/rc_$s.pfm" --stats "$art/${s}_$bin.json" || rc=$?
+                if [ $rc = 0 ]; then times+=("$(jf "$art/${s}_$bin.json" render_s)"); else times+=(""); bad=$(( bad + 1 )); fi
+            done
+            features=$(jf "$art/${s}_trazo.json" features)
+            awk -v s="$s" -v f="$features" -v a="${times[0]}" -v b="${times[1]}" 'BEGIN {
+                r = (a != "" && b != "" && a > 0) ? sprintf("%.3f", b / a) : "";
+                printf "| %s | %s | %s | %s | %s |\n", s, f, a, b, r }' >>"$md"
+            res+=" $s:${times[0]:-?}/${times[1]:-?}"
+        done
+        if (( bad > 0 )); then record register_cap failed "capped/uncapped render_s:$res ($bad renders failed)"
+        else record register_cap ran "capped/uncapped render_s (s):$res (scene_timings.md)"; fi
     fi
 fi
 

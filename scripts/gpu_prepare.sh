@@ -18,7 +18,8 @@
 #      libraries without LD_LIBRARY_PATH (DT_RPATH, not RUNPATH: it also serves the libraries' own deps);
 #   2. builds tests/gpu/egl_interop_probe.cpp against build-gpu's libtrazo_cuda.a (not part of the normal
 #      build: it needs CUDA and tests only the viewer's CUDA-GL interop through headless EGL);
-#   3. assembles gpu-carry/: bin/ (trazo trazo_tests bvh_bench image_error egl_interop_probe), lib/ (every
+#   3. assembles gpu-carry/: bin/ (trazo trazo_tests bvh_bench image_error egl_interop_probe, and
+#      trazo_uncapped: trazo built again with TRAZO_CUDA_PASS_MIN_BLOCKS=1 in build-gpu-uncapped/), lib/ (every
 #      library ldd resolves outside glibc, libstdc++/libgcc_s and the GL loaders), lib-cxx/ (libstdc++ and
 #      libgcc_s, used there only if the system's are older than what the binaries need), lib-gl/ (the glvnd
 #      loaders libEGL/libOpenGL/libGLdispatch, used only if the machine has none), assets/ (the
@@ -76,6 +77,19 @@ declare -A path=([trazo]=app/trazo [trazo_tests]=tests/trazo_tests [bvh_bench]=b
 for name in "${targets[@]}"; do [ -x "$build/${path[$name]}" ] || die "missing $build/${path[$name]}"; done
 log "build done in $(( $(date +%s) - t0 )) s"
 
+# --- 1b. trazo with the render kernels' register cap lifted (register_cap times the two) -----------------
+uncapped=$build-uncapped
+log "configuring $uncapped (the same, TRAZO_CUDA_PASS_MIN_BLOCKS=1)"
+# shellcheck disable=SC2016
+cmake -S "$repo" -B "$uncapped" -G Ninja -DCMAKE_BUILD_TYPE=Release -DTRAZO_ENABLE_CUDA=ON \
+    -DCMAKE_CUDA_COMPILER="$nvcc" -DCMAKE_CUDA_ARCHITECTURES=90-real -DCMAKE_CUDA_FLAGS=--compress-mode=size \
+    -DCMAKE_DISABLE_FIND_PACKAGE_embree=ON -DTRAZO_CUDA_PASS_MIN_BLOCKS=1 \
+    '-DCMAKE_BUILD_RPATH=$ORIGIN/../lib' -DCMAKE_EXE_LINKER_FLAGS=-Wl,--disable-new-dtags >"$uncapped.configure.log" 2>&1 \
+    || { cat "$uncapped.configure.log" >&2; die "cmake configure of $uncapped failed"; }
+rm -f "$uncapped.configure.log"
+cmake --build "$uncapped" -j "$(nproc)" --target trazo
+[ -x "$uncapped/app/trazo" ] || die "missing $uncapped/app/trazo"
+
 # --- 2. the EGL interop probe (links only cuda_gl_display.cu.o out of libtrazo_cuda.a) --------------------
 probe=$build/tests/gpu/egl_interop_probe
 mkdir -p "$(dirname "$probe")"
@@ -94,6 +108,7 @@ rm -rf "$carry"
 mkdir -p "$carry/bin" "$carry/lib" "$carry/lib-cxx" "$carry/lib-gl" "$carry/assets"
 for name in "${targets[@]}"; do cp "$build/${path[$name]}" "$carry/bin/$name"; done
 cp "$probe" "$carry/bin/egl_interop_probe"
+cp "$uncapped/app/trazo" "$carry/bin/trazo_uncapped"
 for b in "$carry"/bin/*; do
     # shellcheck disable=SC2016
     readelf -d "$b" | grep -q 'RPATH.*\$ORIGIN/\.\./lib' || die "$(basename "$b") has no DT_RPATH \$ORIGIN/../lib"

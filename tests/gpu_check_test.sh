@@ -8,7 +8,7 @@
 # Needs no build and no carry folder; takes seconds. Exit 0 pass, 1 fail.
 set -euo pipefail
 repo=${1:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
-steps=(nvidia_smi cuda_render egl_interop cuda_tests bvh_bench scene_timings memcheck)
+steps=(nvidia_smi cuda_render egl_interop cuda_tests bvh_bench scene_timings memcheck register_cap)
 tmp=$(mktemp -d /tmp/gpu_check_test.XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
 fails=0

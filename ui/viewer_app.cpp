@@ -308,8 +308,8 @@ private:
         session_.markDirty(dirty);
         if (a.switchBackend) {
             std::string why;
-            auto backend = createBackend(state_.backend == 1 ? BackendChoice::Cuda : BackendChoice::Cpu,
-                                         options_.threads, why);
+            const BackendChoice choice = state_.backend == 1 ? BackendChoice::Cuda : BackendChoice::Cpu;
+            auto backend = createBackendFor(session_.arrays(), choice, options_.threads, why);
             if (backend) {
                 session_.replaceBackend(std::move(backend));
                 state_.status = "now rendering on " + session_.backend().name();

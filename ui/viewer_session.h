@@ -87,6 +87,7 @@ public:
     uint64_t generation() const { return generation_; }      // changes whenever the accumulation does
     uint32_t seed() const { return seed_; }
     const std::vector<std::string>& unsupported() const { return flat_.unsupported; }
+    const SceneArrays& arrays() const { return flat_.arrays; }  // as last uploaded
     std::vector<Vec3> image();  // sum / count per pixel, row 0 = top (waits for the batch)
 
 private:
