@@ -159,3 +159,142 @@ TEST(Cli, EveryShippedSceneRenders) {
 
 }  // namespace
 }  // namespace trazo::test
+
+// Hostile input (issue 18): the scene-text path. Each case is a reproducer written here into the per-process
+// temp folder: status 2, FILE:LINE and a plain reason, no image, and never a hang (every run under `timeout`).
+#include <sys/stat.h>
+#include <unistd.h>
+#include <algorithm>
+
+#include "scene/block_lexer.h"
+
+namespace trazo::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct HostileResult {
+    int status = -1;
+    std::string errors;
+};
+
+// trazo --render on `scene`, killed after `seconds` (status 124 then: a hang); the image must not appear.
+HostileResult renderHostile(const std::string& scene, const std::string& name, int seconds = 20) {
+    const std::string out = tempPath(name + ".png"), errFile = tempPath(name + ".err");
+    fs::remove(out);
+    const std::string command = "timeout -k 5 " + std::to_string(seconds) + " " + trazoBinary() + " --render '" +
+                                scene + "' -o '" + out + "' --width 8 --height 8 --spp 1 --quiet 2>'" + errFile +
+                                "' >/dev/null </dev/null";
+    const int raw = std::system(command.c_str());
+    HostileResult r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.errors = readFileText(errFile);
+    EXPECT_FALSE(fs::exists(out)) << name << ": an image was written";
+    return r;
+}
+
+std::string writeBytes(const std::string& name, const std::string& bytes) {
+    const std::string path = tempPath(name);
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
+}
+
+size_t lineCount(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
+
+const char* kHostileHead =
+    "Camera\n{\n    POV 0 0 5\n}\nMaterial\n{\n    Name white\n}\nPointLight\n{\n    Position 2 2 2\n}\n";  // 12 lines
+
+TEST(CliHostile, HundredThousandNestedBraces) {
+    std::string lines = "Sphere\n";
+    for (int i = 0; i < 100000; ++i) lines += "{\n";
+    const HostileResult r = renderHostile(writeBytes("nest.scene", lines), "nest");
+    EXPECT_EQ(r.status, 2) << r.errors;
+    EXPECT_NE(r.errors.find("nest.scene:1: error: unterminated block 'Sphere'"), std::string::npos) << r.errors;
+    EXPECT_NE(r.errors.find("too many syntax errors"), std::string::npos) << r.errors;
+    EXPECT_LE(lineCount(r.errors), size_t(kMaxLexerErrors) + 10);
+    std::string braces = "Sphere";  // and as many as fit on one line (this recursed once a brace)
+    while (braces.size() + 2 <= kMaxLineBytes) braces += " {";
+    const HostileResult one = renderHostile(writeBytes("nest1.scene", braces + "\n"), "nest1");
+    EXPECT_EQ(one.status, 2) << one.errors;
+    EXPECT_NE(one.errors.find("nest1.scene:1:"), std::string::npos) << one.errors;
+}
+
+TEST(CliHostile, LongLinesAndHugeFilesAreRefused) {
+    const std::string line = "Sphere\n{\n    Radius 1 #" + std::string(kMaxLineBytes, '#') + "\n}\n";
+    const HostileResult r = renderHostile(writeBytes("long.scene", kHostileHead + line), "long");
+    EXPECT_EQ(r.status, 2) << r.errors;
+    EXPECT_NE(r.errors.find("long.scene:15: error: line too long ("), std::string::npos) << r.errors;
+    // A file that claims 2^31 + 1 bytes (sparse: nothing is written) is refused before it is read.
+    const std::string huge = writeBytes("huge.scene", kSmallScene);
+    ASSERT_EQ(::truncate(huge.c_str(), (off_t(1) << 31) + 1), 0);
+    const HostileResult h = renderHostile(huge, "huge", 10);
+    EXPECT_EQ(h.status, 2) << h.errors;
+    EXPECT_NE(h.errors.find("huge.scene: error: cannot read scene file: file too large (2147483649 bytes"),
+              std::string::npos)
+        << h.errors;
+    fs::remove(huge);
+    // A CSG file over the scene-file limit, named by a Source line: that line, and the reason.
+    const std::string csg = writeBytes("huge.csg", "");
+    ASSERT_EQ(::truncate(csg.c_str(), off_t(kMaxSceneFileBytes) + 1), 0);
+    const HostileResult c = renderHostile(
+        writeBytes("hugecsg.scene", std::string(kHostileHead) + "CSG\n{\n    Material white\n    Source \"huge.csg\"\n}\n"),
+        "hugecsg");
+    EXPECT_EQ(c.status, 2) << c.errors;
+    EXPECT_NE(c.errors.find("hugecsg.scene:16:"), std::string::npos) << c.errors;
+    EXPECT_NE(c.errors.find("file too large"), std::string::npos) << c.errors;
+    fs::remove(csg);
+}
+
+// A FIFO blocks an ordinary open until a writer comes, which never happens: as a Source of every kind and as
+// the scene itself it is refused before it is opened.
+TEST(CliHostile, FifoIsRefusedNotWaitedFor) {
+    const std::string fifo = tempPath("pipe.fifo");
+    fs::remove(fifo);
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const struct {
+        const char* name;
+        std::string block;
+    } cases[] = {
+        {"fifomesh", "Mesh\n{\n    Material white\n    Source \"pipe.fifo\"\n}\n"},
+        {"fifocsg", "CSG\n{\n    Material white\n    Source \"pipe.fifo\"\n}\n"},
+        {"fifotex", "Texture\n{\n    Name t\n    Source \"pipe.fifo\"\n}\n"},
+    };
+    for (const auto& c : cases) {
+        const HostileResult r =
+            renderHostile(writeBytes(std::string(c.name) + ".scene", kHostileHead + c.block), c.name);
+        EXPECT_EQ(r.status, 2) << c.name << ": " << r.errors;
+        EXPECT_NE(r.errors.find(std::string(c.name) + ".scene:16:"), std::string::npos) << r.errors;
+        EXPECT_NE(r.errors.find("not a regular file (a FIFO)"), std::string::npos) << r.errors;
+    }
+    const HostileResult s = renderHostile(fifo, "fifoscene");
+    EXPECT_EQ(s.status, 2) << s.errors;
+    EXPECT_NE(s.errors.find("pipe.fifo: error: cannot read scene file: not a regular file (a FIFO)"),
+              std::string::npos)
+        << s.errors;
+    fs::remove(fifo);
+}
+
+// A NUL inside a Source path would open the file named by the bytes before it and cut every message short.
+TEST(CliHostile, NulInASourcePathIsAnError) {
+    writeBytes("nul.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const std::string mesh = std::string("Mesh\n{\n    Material white\n    Source \"nul.obj") + '\0' + "x.obj\"\n}\n";
+    const HostileResult r = renderHostile(writeBytes("nul.scene", kHostileHead + mesh), "nul");
+    EXPECT_EQ(r.status, 2) << r.errors;
+    EXPECT_NE(r.errors.find("nul.scene:16:20: error: NUL byte in the text (not allowed)"), std::string::npos)
+        << r.errors;
+    EXPECT_EQ(lineCount(r.errors), 1u) << r.errors;  // no "missing required parameter" after it
+}
+
+// `Source ""` used to drop the texture, mesh or CSG without a word and render the rest.
+TEST(CliHostile, EmptySourceIsAnError) {
+    for (const char* block : {"Texture\n{\n    Name t\n    Source \"\"\n}\n",
+                              "Mesh\n{\n    Material white\n    Source \"\"\n}\n",
+                              "CSG\n{\n    Material white\n    Source \"\"\n}\n"}) {
+        const HostileResult r = renderHostile(writeBytes("empty.scene", kHostileHead + std::string(block)), "empty");
+        EXPECT_EQ(r.status, 2) << block << r.errors;
+        EXPECT_NE(r.errors.find("empty.scene:16:12: error: Source: empty path"), std::string::npos) << r.errors;
+    }
+}
+
+}  // namespace
+}  // namespace trazo::test

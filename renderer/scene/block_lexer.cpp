@@ -3,14 +3,13 @@
 
 #include "io/text_file.h"
 
-#include <cerrno>
+#include <unistd.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <string_view>
 #include <utility>
 
 namespace trazo {
@@ -21,6 +20,35 @@ struct Token {
     int column = 0;
     bool quoted = false;
     bool isBrace(char c) const { return !quoted && text.size() == 1 && text[0] == c; }
+};
+
+// Every syntax error of one file goes through here, so that a hostile file (100 000 stray braces) gives a
+// bounded report: after kMaxLexerErrors the lexer says so once and reads no further.
+class Reporter {
+public:
+    Reporter(const std::string& file, Diagnostics& diags) : file_(file), diags_(diags) {}
+
+    void error(int line, int column, std::string message) {
+        if (stopped_) return;
+        if (++count_ > kMaxLexerErrors) {
+            diags_.error({file_, reading_, 0}, "too many syntax errors (more than " + std::to_string(kMaxLexerErrors) +
+                                               "); the rest of the file is not read");
+            stopped_ = true;
+            return;
+        }
+        diags_.error({file_, line, column}, std::move(message));
+    }
+    void error(const SourceLocation& where, std::string message) { error(where.line, where.column, std::move(message)); }
+    bool stopped() const { return stopped_; }
+    const std::string& file() const { return file_; }
+    void reading(int line) { reading_ = line; }  // the line being read, where "too many" is reported
+
+private:
+    const std::string& file_;
+    Diagnostics& diags_;
+    int count_ = 0;
+    int reading_ = 0;
+    bool stopped_ = false;
 };
 
 // Numbers as the tables will see them: the whole token must read as a number. Out-of-range values become
@@ -39,10 +67,29 @@ bool parseNumber(const std::string& text, double& out) {
     return ec == std::errc();
 }
 
-std::vector<Token> tokenize(const std::string& line, int lineNumber, const std::string& file,
-                            Diagnostics& diags) {
-    std::vector<Token> tokens;
+std::string tooLong(const char* what, size_t size, size_t limit) {
+    return std::string(what) + " too long (" + std::to_string(size) + " bytes; the limit is " +
+           std::to_string(limit) + " bytes)";
+}
+
+// The tokens of one line (at most kMaxLineBytes, checked by the caller). False, after reporting, when the line
+// cannot be read: a NUL byte (it would cut every path and message short) or a token over kMaxTokenBytes.
+bool tokenize(std::string_view line, int lineNumber, Reporter& report, std::vector<Token>& tokens) {
+    tokens.clear();
     size_t i = 0;
+    auto add = [&](size_t from, size_t size, int column, bool quoted) {
+        if (size > kMaxTokenBytes) {
+            report.error(lineNumber, column, tooLong(quoted ? "quoted path" : "token", size, kMaxTokenBytes));
+            return false;
+        }
+        const std::string_view text = line.substr(from, size);
+        if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
+            report.error(lineNumber, static_cast<int>(from + nul) + 1, "NUL byte in the text (not allowed)");
+            return false;
+        }
+        tokens.push_back({std::string(text), column, quoted});
+        return true;
+    };
     while (i < line.size()) {
         const char c = line[i];
         if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
@@ -53,12 +100,11 @@ std::vector<Token> tokenize(const std::string& line, int lineNumber, const std::
         const int column = static_cast<int>(i) + 1;
         if (c == '"') {
             const size_t close = line.find('"', i + 1);
-            if (close == std::string::npos) {
-                diags.error({file, lineNumber, column}, "unterminated quoted path");
-                tokens.push_back({line.substr(i + 1), column, true});
-                break;
+            if (close == std::string_view::npos) {
+                report.error(lineNumber, column, "unterminated quoted path");
+                return add(i + 1, line.size() - i - 1, column, true);
             }
-            tokens.push_back({line.substr(i + 1, close - i - 1), column, true});
+            if (!add(i + 1, close - i - 1, column, true)) return false;
             i = close + 1;
             continue;
         }
@@ -68,11 +114,11 @@ std::vector<Token> tokenize(const std::string& line, int lineNumber, const std::
             continue;
         }
         const size_t end = line.find_first_of(" \t\r\f\v#{}\"", i);
-        const size_t stop = end == std::string::npos ? line.size() : end;
-        tokens.push_back({line.substr(i, stop - i), column, false});
+        const size_t stop = end == std::string_view::npos ? line.size() : end;
+        if (!add(i, stop - i, column, false)) return false;
         i = stop;
     }
-    return tokens;
+    return true;
 }
 
 BlockValue toValue(const Token& t) {
@@ -89,27 +135,35 @@ BlockValue toValue(const Token& t) {
     return v;
 }
 
-ParameterLine toParameter(const std::vector<Token>& tokens, size_t count, int lineNumber) {
+ParameterLine toParameter(const std::vector<Token>& tokens, size_t from, size_t count, int lineNumber) {
     ParameterLine p;
-    p.name = tokens[0].text;
+    p.name = tokens[from].text;
     p.line = lineNumber;
-    p.column = tokens[0].column;
-    for (size_t k = 1; k < count; ++k) p.values.push_back(toValue(tokens[k]));
+    p.column = tokens[from].column;
+    for (size_t k = from + 1; k < count; ++k) p.values.push_back(toValue(tokens[k]));
     return p;
 }
 
-// The state machine: outside a block, after an identifier awaiting '{', or inside a block.
+// The state machine: outside a block, after an identifier awaiting '{', or inside a block. Blocks do not nest
+// (SPEC §1), so there is no depth to track: a '{' inside a block ends the block before it (reported). The
+// rest of a line after a '{' is read in a loop over the same tokens, never by recursion, so a line of many
+// braces costs neither stack nor copies.
 class Lexer {
 public:
-    Lexer(const std::string& file, Diagnostics& diags) : file_(file), diags_(diags) {}
+    explicit Lexer(Reporter& report) : report_(report), file_(report.file()) {}
 
     void feed(const std::vector<Token>& tokens, int lineNumber) {
         if (inside_) {
-            feedInside(tokens, lineNumber);
+            feedInside(tokens, 0, lineNumber);
         } else {
             feedOutside(tokens, lineNumber);
         }
         previousLine_ = lineNumber;
+    }
+
+    // A line refused by the limits (already reported): the block it was in lacks whatever that line said.
+    void refused() {
+        if (inside_) current_.complete = false;
     }
 
     std::vector<Block> finish() {
@@ -117,9 +171,7 @@ public:
             reportUnterminated("the end of the file");
             closeBlock();
         }
-        if (!pending_.empty()) {
-            diags_.error({file_, pendingLine_, 0}, "expected '{' after '" + pending_ + "'");
-        }
+        if (!pending_.empty()) report_.error(pendingLine_, 0, "expected '{' after '" + pending_ + "'");
         return std::move(blocks_);
     }
 
@@ -140,7 +192,7 @@ private:
     void reportUnterminated(const std::string& before) {
         current_.terminated = false;
         const std::string name = current_.identifier.empty() ? "block" : "block '" + current_.identifier + "'";
-        diags_.error(current_.where, "unterminated " + name + " (no '}' before " + before + ")");
+        report_.error(current_.where, "unterminated " + name + " (no '}' before " + before + ")");
     }
 
     void feedOutside(const std::vector<Token>& tokens, int lineNumber) {
@@ -150,17 +202,17 @@ private:
                 openBlock(name, pendingLine_);
                 return;
             }
-            diags_.error({file_, pendingLine_, 0}, "expected '{' after '" + name + "'");
+            report_.error(pendingLine_, 0, "expected '{' after '" + name + "'");
         }
         const Token& first = tokens[0];
         if (first.isBrace('{')) {
-            diags_.error({file_, lineNumber, first.column}, "'{' without a block name");
+            report_.error(lineNumber, first.column, "'{' without a block name");
             openBlock("", lineNumber);
             if (tokens.size() > 1) afterBrace(tokens, 1, lineNumber);
             return;
         }
         if (first.isBrace('}')) {
-            diags_.error({file_, lineNumber, first.column}, "stray '}' outside a block");
+            report_.error(lineNumber, first.column, "stray '}' outside a block");
             return;
         }
         if (!first.quoted && tokens.size() == 1) {
@@ -173,60 +225,67 @@ private:
             if (tokens.size() > 2) afterBrace(tokens, 2, lineNumber);
             return;
         }
-        diags_.error({file_, lineNumber, first.column}, "text outside a block: '" + joined(tokens) + "'");
+        report_.error(lineNumber, first.column, "text outside a block: '" + joined(tokens) + "'");
     }
 
     // Text after an opening brace on the same line: reported, then read as if it were on its own line.
     void afterBrace(const std::vector<Token>& tokens, size_t from, int lineNumber) {
-        diags_.error({file_, lineNumber, tokens[from].column}, "unexpected text after '{'");
-        feedInside(std::vector<Token>(tokens.begin() + static_cast<long>(from), tokens.end()), lineNumber);
+        report_.error(lineNumber, tokens[from].column, "unexpected text after '{'");
+        feedInside(tokens, from, lineNumber);
     }
 
-    void feedInside(const std::vector<Token>& tokens, int lineNumber) {
-        const Token& first = tokens[0];
-        if (first.isBrace('}')) {
-            if (tokens.size() > 1) {
-                diags_.error({file_, lineNumber, tokens[1].column}, "unexpected text after '}'");
+    // tokens[from…] inside a block; loops (instead of recursing) over the text after each '{' on the line.
+    void feedInside(const std::vector<Token>& tokens, size_t from, int lineNumber) {
+        while (!report_.stopped()) {
+            const Token& first = tokens[from];
+            if (first.isBrace('}')) {
+                if (tokens.size() > from + 1) {
+                    report_.error(lineNumber, tokens[from + 1].column, "unexpected text after '}'");
+                }
+                closeBlock();
+                return;
             }
-            closeBlock();
+            // A '{' inside a block means the previous block lost its '}': report it, then start the new one.
+            size_t brace = from;
+            while (brace < tokens.size() && !tokens[brace].isBrace('{')) ++brace;
+            if (brace < tokens.size()) {
+                reportUnterminated("line " + std::to_string(lineNumber));
+                std::string name;
+                int nameLine = lineNumber;
+                if (brace == from + 1 && !first.quoted) {
+                    name = first.text;
+                } else if (brace == from && !current_.parameters.empty() &&
+                           current_.parameters.back().values.empty() &&
+                           current_.parameters.back().line == previousLine_) {
+                    // "Identifier" alone on the previous line was read as a parameter; it names the new block.
+                    name = current_.parameters.back().name;
+                    nameLine = current_.parameters.back().line;
+                    current_.parameters.pop_back();
+                }
+                closeBlock();
+                openBlock(name, nameLine);
+                if (tokens.size() <= brace + 1) return;
+                report_.error(lineNumber, tokens[brace + 1].column, "unexpected text after '{'");
+                from = brace + 1;
+                continue;
+            }
+            size_t count = tokens.size();
+            for (size_t k = from + 1; k < tokens.size(); ++k) {
+                if (tokens[k].isBrace('}')) {
+                    count = k;
+                    break;
+                }
+            }
+            if (first.quoted) {
+                report_.error(lineNumber, first.column, "expected a parameter name, got a quoted path");
+            } else {
+                current_.parameters.push_back(toParameter(tokens, from, count, lineNumber));
+            }
+            if (count < tokens.size()) {
+                report_.error(lineNumber, tokens[count].column, "'}' must be on its own line");
+                closeBlock();
+            }
             return;
-        }
-        // A '{' inside a block means the previous block lost its '}': report it, then start the new one.
-        size_t brace = 0;
-        while (brace < tokens.size() && !tokens[brace].isBrace('{')) ++brace;
-        if (brace < tokens.size()) {
-            reportUnterminated("line " + std::to_string(lineNumber));
-            std::string name;
-            int nameLine = lineNumber;
-            if (brace == 1 && !first.quoted) {
-                name = first.text;
-            } else if (brace == 0 && !current_.parameters.empty() && current_.parameters.back().values.empty() &&
-                       current_.parameters.back().line == previousLine_) {
-                // "Identifier" alone on the previous line was read as a parameter; it names the new block.
-                name = current_.parameters.back().name;
-                nameLine = current_.parameters.back().line;
-                current_.parameters.pop_back();
-            }
-            closeBlock();
-            openBlock(name, nameLine);
-            if (tokens.size() > brace + 1) afterBrace(tokens, brace + 1, lineNumber);
-            return;
-        }
-        size_t count = tokens.size();
-        for (size_t k = 1; k < tokens.size(); ++k) {
-            if (tokens[k].isBrace('}')) {
-                count = k;
-                break;
-            }
-        }
-        if (first.quoted) {
-            diags_.error({file_, lineNumber, first.column}, "expected a parameter name, got a quoted path");
-        } else {
-            current_.parameters.push_back(toParameter(tokens, count, lineNumber));
-        }
-        if (count < tokens.size()) {
-            diags_.error({file_, lineNumber, tokens[count].column}, "'}' must be on its own line");
-            closeBlock();
         }
     }
 
@@ -239,8 +298,8 @@ private:
         return s;
     }
 
+    Reporter& report_;
     const std::string& file_;
-    Diagnostics& diags_;
     std::vector<Block> blocks_;
     Block current_;
     bool inside_ = false;
@@ -252,39 +311,43 @@ private:
 }  // namespace
 
 std::vector<Block> lexBlocks(const std::string& text, const std::string& file, Diagnostics& diags) {
-    Lexer lexer(file, diags);
+    Reporter report(file, diags);
+    if (text.size() > kMaxSceneFileBytes) {  // (the readers refuse such a file before reading it)
+        report.error(0, 0, tooLong("text", text.size(), kMaxSceneFileBytes));
+        return {};
+    }
+    Lexer lexer(report);
+    const std::string_view all(text);
     size_t start = 0;
-    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) start = 3;  // UTF-8 byte-order mark
-    int lineNumber = 0;
-    while (start <= text.size()) {
-        size_t end = text.find('\n', start);
-        if (end == std::string::npos) end = text.size();
-        ++lineNumber;
-        const std::vector<Token> tokens = tokenize(text.substr(start, end - start), lineNumber, file, diags);
-        if (!tokens.empty()) lexer.feed(tokens, lineNumber);
+    if (all.substr(0, 3) == "\xEF\xBB\xBF") start = 3;  // UTF-8 byte-order mark
+    int lineNumber = 0;  // cannot overflow: kMaxSceneFileBytes < INT_MAX
+    std::vector<Token> tokens;
+    while (start <= all.size() && !report.stopped()) {
+        size_t end = all.find('\n', start);
+        if (end == std::string_view::npos) end = all.size();
+        report.reading(++lineNumber);
+        if (end - start > kMaxLineBytes) {
+            report.error(lineNumber, 0, tooLong("line", end - start, kMaxLineBytes));
+            lexer.refused();
+        } else if (!tokenize(all.substr(start, end - start), lineNumber, report, tokens)) {
+            lexer.refused();
+        } else if (!tokens.empty()) {
+            lexer.feed(tokens, lineNumber);
+        }
         start = end + 1;
     }
     return lexer.finish();
 }
 
 bool checkReadable(const std::string& path, std::string& reason) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        reason = std::strerror(EISDIR);  // opening a folder succeeds on Linux; reading it does not
-        return false;
-    }
-    errno = 0;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        reason = std::strerror(errno != 0 ? errno : ENOENT);
-        return false;
-    }
+    const int fd = openRegularFile(path, reason);  // never blocks: a FIFO or a device is refused unopened
+    if (fd < 0) return false;
+    ::close(fd);
     return true;
 }
 
-bool readTextFile(const std::string& path, std::string& contents, std::string& reason) {
-    if (!checkReadable(path, reason)) return false;
-    return readWholeFile(path, contents, reason);  // one read into a string of the file's size (OBJ files are large)
+bool readTextFile(const std::string& path, std::string& contents, std::string& reason, size_t maxBytes) {
+    return readWholeFile(path, contents, reason, maxBytes);  // one read into a string of the file's size
 }
 
 std::string resolveRelativePath(const std::string& namingFile, const std::string& written) {

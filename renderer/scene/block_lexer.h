@@ -4,9 +4,17 @@
 #include <string>
 #include <vector>
 
+#include "io/text_file.h"
 #include "scene/diagnostic.h"
 
 namespace trazo {
+
+// Limits on a scene or CSG text (SPEC §2, "Limits"), beyond the file size (kMaxSceneFileBytes): a longer line
+// or token is an error at its line, and after kMaxLexerErrors syntax errors the rest of the file is not read.
+// The longest meaningful line is a parameter with a path (a path is at most PATH_MAX = 4096 bytes on Linux).
+inline constexpr size_t kMaxLineBytes = 64 * 1024;
+inline constexpr size_t kMaxTokenBytes = 4096;
+inline constexpr int kMaxLexerErrors = 100;
 
 // One value on a parameter line. A token that reads entirely as a number (including "nan", "inf" and
 // out-of-range ones like 1e999, which read as ±inf) is a Number; the table decides whether it is allowed.
@@ -29,15 +37,20 @@ struct Block {
     SourceLocation where;    // the identifier's line
     std::vector<ParameterLine> parameters;
     bool terminated = true;  // false when its '}' is missing (already reported)
+    bool complete = true;    // false when a line of it was refused (too long, NUL byte; already reported)
 };
 
-// Never throws; every syntax problem goes to `diags` with `file` and the line.
+// Never throws; every syntax problem goes to `diags` with `file` and the line. Iterative: no input nests the
+// call stack, and a NUL byte outside a comment is an error (it would cut paths and messages short).
 std::vector<Block> lexBlocks(const std::string& text, const std::string& file, Diagnostics& diags);
 
-// Reads a whole file; on failure returns false and puts the OS reason (strerror) in `reason`.
-bool readTextFile(const std::string& path, std::string& contents, std::string& reason);
+// Reads a whole regular file of at most `maxBytes`; on failure returns false and puts the reason in `reason`
+// (the OS reason as strerror words it, "not a regular file (a FIFO)", or "file too large (…)").
+bool readTextFile(const std::string& path, std::string& contents, std::string& reason,
+                  size_t maxBytes = kMaxSceneFileBytes);
 
-// Opens and closes `path` to learn whether it can be read; on failure `reason` is the OS reason.
+// Opens and closes `path` to learn whether it can be read: a regular file only, checked before opening (a
+// FIFO would block the open for ever); on failure `reason` is as for readTextFile.
 bool checkReadable(const std::string& path, std::string& reason);
 
 // `written` relative to the folder of `namingFile` (unchanged when absolute), lexically normalised.

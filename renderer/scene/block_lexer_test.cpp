@@ -184,3 +184,96 @@ TEST(BlockLexerTest, RelativePathsResolveAgainstTheNamingFile) {
 
 }  // namespace
 }  // namespace trazo
+
+// Hostile input (issue 18): bounded work, no recursion, and every refusal at its file:line.
+namespace trazo {
+namespace {
+
+size_t countErrors(const Diagnostics& d) {
+    size_t n = 0;
+    for (const Diagnostic& x : d.items) n += x.severity == Severity::Error;
+    return n;
+}
+
+// 100 000 '{' lines used to be read as 100 000 unterminated blocks (and the same on one line recursed once a
+// brace): now the report stops after kMaxLexerErrors, saying so at the line where it stopped.
+TEST(BlockLexerHostileTest, HundredThousandNestedBracesGiveABoundedReport) {
+    std::string text = "Sphere\n";
+    for (int i = 0; i < 100000; ++i) text += "{\n";
+    Diagnostics diags;
+    lexBlocks(text, "nest.scene", diags);
+    ASSERT_EQ(diags.items.size(), size_t(kMaxLexerErrors) + 1);
+    EXPECT_EQ(formatDiagnostic(diags.items[0]), "nest.scene:1: error: unterminated block 'Sphere' (no '}' before line 3)");
+    EXPECT_EQ(formatDiagnostic(diags.items.back()),
+              "nest.scene:103: error: too many syntax errors (more than 100); the rest of the file is not read");
+}
+
+TEST(BlockLexerHostileTest, ManyBracesOnOneLineAreReadInALoop) {
+    std::string line;
+    while (7 + line.size() + 2 <= kMaxLineBytes) line += "{ ";  // "Sphere " + line fits in a line
+    Diagnostics diags;
+    lexBlocks("Sphere " + line + "\n}\n", "one.scene", diags);
+    EXPECT_EQ(diags.items.size(), size_t(kMaxLexerErrors) + 1);
+    EXPECT_EQ(diags.items[0].where.line, 1);
+    // Below the error cap the same line keeps being read: 20 braces, each an unterminated block.
+    std::string few;
+    for (int i = 0; i < 20; ++i) few += "{ ";
+    Diagnostics some;
+    const auto blocks = lexBlocks("Sphere " + few + "Radius 1\n}\n", "few.scene", some);
+    ASSERT_EQ(blocks.size(), 20u);
+    EXPECT_EQ(blocks.back().parameters.size(), 1u);
+    EXPECT_TRUE(blocks.back().terminated);
+}
+
+TEST(BlockLexerHostileTest, LineOverTheLimitIsAnErrorAtItsLine) {
+    const std::string ok(kMaxLineBytes - 2, 'x');
+    Diagnostics fine;
+    auto blocks = lexBlocks("Sphere {\n #" + ok + "\n Radius 2\n}\n", "fine.scene", fine);
+    EXPECT_TRUE(fine.items.empty());  // a line of exactly kMaxLineBytes is read
+    const std::string over(kMaxLineBytes - 8, '1');  // " Radius " + over + "\r" = limit + 1 bytes
+    Diagnostics diags;
+    blocks = lexBlocks("Sphere {\n Radius " + over + "\r\n Radius 2\n}\n", "long.scene", diags);
+    ASSERT_EQ(diags.items.size(), 1u);
+    EXPECT_EQ(formatDiagnostic(diags.items[0]),
+              "long.scene:2: error: line too long (65537 bytes; the limit is 65536 bytes)");
+    ASSERT_EQ(blocks.size(), 1u);
+    ASSERT_EQ(blocks[0].parameters.size(), 1u);  // the long line is skipped, the rest is read
+    EXPECT_EQ(blocks[0].parameters[0].line, 3);
+}
+
+TEST(BlockLexerHostileTest, TokenOverTheLimitIsAnErrorAtItsColumn) {
+    Diagnostics fine;
+    lexBlocks("Mesh {\n Source \"" + std::string(kMaxTokenBytes, 'a') + "\"\n}\n", "fine.scene", fine);
+    EXPECT_TRUE(fine.items.empty());
+    Diagnostics diags;
+    lexBlocks("Mesh {\n Source \"" + std::string(kMaxTokenBytes + 1, 'a') + "\"\n Name " +
+                  std::string(kMaxTokenBytes + 1, 'b') + "\n}\n",
+              "tok.scene", diags);
+    ASSERT_EQ(diags.items.size(), 2u);
+    EXPECT_EQ(formatDiagnostic(diags.items[0]),
+              "tok.scene:2:9: error: quoted path too long (4097 bytes; the limit is 4096 bytes)");
+    EXPECT_EQ(formatDiagnostic(diags.items[1]), "tok.scene:3:7: error: token too long (4097 bytes; the limit is 4096 bytes)");
+}
+
+TEST(BlockLexerHostileTest, NulByteIsAnErrorExceptInAComment) {
+    const char raw[] = "Mesh {\n Source \"a\0b.obj\"\n Material m\0x\n # \0 comment\n}\n";
+    Diagnostics diags;
+    const auto blocks = lexBlocks(std::string(raw, sizeof raw - 1), "nul.scene", diags);
+    ASSERT_EQ(diags.items.size(), 2u);
+    EXPECT_EQ(formatDiagnostic(diags.items[0]), "nul.scene:2:11: error: NUL byte in the text (not allowed)");
+    EXPECT_EQ(formatDiagnostic(diags.items[1]), "nul.scene:3:12: error: NUL byte in the text (not allowed)");
+    ASSERT_EQ(blocks.size(), 1u);
+    EXPECT_TRUE(blocks[0].parameters.empty());
+    EXPECT_FALSE(blocks[0].complete);  // so that no "missing required parameter 'Source'" follows
+}
+
+TEST(BlockLexerHostileTest, ReadTextFileRefusesDevicesAndLargeFiles) {
+    std::string text, reason;
+    EXPECT_FALSE(readTextFile("/dev/zero", text, reason));
+    EXPECT_EQ(reason, "not a regular file (a character device)");
+    EXPECT_FALSE(checkReadable("/dev/null", reason));
+    EXPECT_EQ(reason, "not a regular file (a character device)");
+}
+
+}  // namespace
+}  // namespace trazo

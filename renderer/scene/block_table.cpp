@@ -500,6 +500,14 @@ int checkParameter(const Block& block, const std::vector<ParamInfo>& params, con
                                 "write \"" + bv.text + "\"");
                     return k;
                 }
+                if (bv.text.empty()) {  // it would name the scene's own folder, or nothing
+                    diags.error(at, name + ": empty path");
+                    return k;
+                }
+                if (bv.text.find('\0') != std::string::npos) {  // the lexer refuses a NUL; this guards other Blocks
+                    diags.error(at, name + ": the path contains a NUL byte");
+                    return k;
+                }
                 value.text = bv.text;
                 break;
         }
@@ -510,6 +518,7 @@ int checkParameter(const Block& block, const std::vector<ParamInfo>& params, con
 
 void reportMissingRequired(const Block& block, const std::vector<ParamInfo>& params, const std::vector<bool>& seen,
                            Diagnostics& diags) {
+    if (!block.complete) return;  // a refused line may have held it: that line's error says enough
     for (size_t k = 0; k < params.size(); ++k) {
         if (params[k].required() && !seen[k]) {
             diags.error(block.where,

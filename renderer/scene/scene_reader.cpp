@@ -126,7 +126,7 @@ private:
         TextureDraft d;
         readParameters(block, textureTable(), d, diags_);
         Texture& t = d.texture;
-        if (t.name.empty() || t.source.empty()) return;  // reported as missing
+        if (t.name.empty() || t.source.empty()) return;  // reported (missing, empty, or on a refused line)
         if (!checkUnique("texture", t.name, d.nameAt, declaredTextures_, index)) return;
         t.source = resolveRelativePath(file_, t.source);
         t.image = readTextureImage(t.source, d.sourceAt, diags_);
@@ -172,7 +172,7 @@ private:
         Mesh& mesh = d.object;
         if (!mesh.source.empty()) {
             mesh.source = resolveRelativePath(file_, mesh.source);
-            mesh.data = loadNamedFile(mesh.source, d.sourceAt, meshes_, readObjText);
+            mesh.data = loadNamedFile(mesh.source, d.sourceAt, meshes_, readObjText, kMaxTextFileBytes);
         }
         if (mesh.data && !mesh.data->hasUvs && mesh.material >= 0) {
             const Material& m = scene_.materials[size_t(mesh.material)];
@@ -190,19 +190,20 @@ private:
         Csg& csg = d.object;
         if (!csg.source.empty()) {
             csg.source = resolveRelativePath(file_, csg.source);
-            csg.tree = loadNamedFile(csg.source, d.sourceAt, csgTrees_, readCsgText);
+            csg.tree = loadNamedFile(csg.source, d.sourceAt, csgTrees_, readCsgText, kMaxSceneFileBytes);
         }
         scene_.csgs.push_back(std::move(csg));
     }
 
-    // Reads a file named by a Source line once per scene; an unreadable file is reported at that line.
+    // Reads a file named by a Source line once per scene; an unreadable file (not a regular file, or over
+    // `maxBytes`) is reported at that line.
     template <class Data, class Reader>
     std::shared_ptr<const Data> loadNamedFile(const std::string& path, const SourceLocation& namedAt,
                                               std::map<std::string, std::shared_ptr<const Data>>& cache,
-                                              Reader reader) {
+                                              Reader reader, size_t maxBytes) {
         if (const auto it = cache.find(path); it != cache.end()) return it->second;
         std::string text, reason;
-        if (!readTextFile(path, text, reason)) {
+        if (!readTextFile(path, text, reason, maxBytes)) {
             diags_.error(namedAt, "cannot read '" + path + "': " + reason);
             return nullptr;
         }
