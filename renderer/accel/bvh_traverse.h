@@ -127,8 +127,8 @@ constexpr int kTraversalStackSize = kHostTraversalStackSize;
 // A stack of pending children: closest-hit queries keep StackEntry, any-hit queries references only. A
 // traversal pushes above `size` and returns with `size` where it found it, so a traversal started from a
 // leaf function (a mesh inside the top level) shares the caller's stack: the caller publishes its size
-// before each leaf call. A push beyond `capacity` is dropped: the upload's check makes that unreachable,
-// the guard keeps memory safe regardless.
+// before each leaf call. On the device a push beyond `capacity` is dropped: the upload's check makes that
+// unreachable, the guard keeps memory safe regardless.
 template <typename Entry>
 struct TraversalStack {
     Entry* entries;
@@ -139,7 +139,12 @@ struct TraversalStack {
 namespace bvh_detail {
 template <typename Entry>
 TRAZO_HD void push(Entry* entries, int& size, int capacity, const Entry& e) {
-    if (size < capacity) entries[size++] = e;
+#if TRAZO_DEVICE_PATHS
+    if (size >= capacity) return;
+#else
+    (void)capacity;  // the host's stacks hold the bound of any tree the builder makes: no test per push
+#endif
+    entries[size++] = e;
 }
 }  // namespace bvh_detail
 
