@@ -5,6 +5,7 @@
 #include "device/flatten_mesh.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <thread>
 
@@ -14,6 +15,7 @@
 
 #include "accel/bvh_build.h"
 #include "accel/collapse_bvh.h"
+#include "scene/obj_reader.h"
 
 namespace trazo {
 
@@ -103,10 +105,14 @@ void parallelChunks(size_t n, Fn&& fn) {
 // What the triangles of one mesh share, computed once: world positions, smooth normals per position (when
 // the file has no normals), Lengyel tangent sums per distinct corner (when it has uvs). Then any
 // triangle's world positions and shading corners, independently of the others.
+// Relies on the MeshData contract of scene/obj_reader.h and on nothing else: every index in range, the
+// normal index used exactly when hasNormals, the uv index exactly when hasUvs, corner and triangle numbers
+// that fit a uint32_t (asserted in debug builds; the OBJ reader refuses a file that breaks it).
 class MeshShading {
 public:
     MeshShading(const MeshData& data, const Affine3& worldFromObject)
         : data_(data), objectFromWorld_(inverse(worldFromObject)), positions_(data.positions.size()) {
+        assert(objMeshContractViolation(data).empty() && "MeshData breaks the contract of scene/obj_reader.h");
         for (size_t i = 0; i < positions_.size(); ++i) positions_[i] = worldFromObject.applyToPoint(data.positions[i]);
         const size_t triangleCount = data.corners.size() / 3;
 
@@ -166,7 +172,8 @@ public:
 
     MeshTriangle triangle(size_t t) const {
         const MeshData::Corner* c = &data_.corners[3 * t];
-        return {positions_[c[0].position], positions_[c[1].position], positions_[c[2].position]};
+        return {positions_[(size_t)c[0].position], positions_[(size_t)c[1].position],
+                positions_[(size_t)c[2].position]};
     }
 
     TriangleCorners corners(size_t t) const {
@@ -176,8 +183,9 @@ public:
         for (int k = 0; k < 3; ++k) {
             const MeshData::Corner& c = data_.corners[3 * t + k];
             MeshCorner& mc = out.corner[k];
-            const Vec3 n0 = c.normal >= 0 ? objectFromWorld_.applyTransposeToVector(data_.normals[c.normal])
-                                          : computedNormals_[c.position];
+            const Vec3 n0 = data_.hasNormals
+                                ? objectFromWorld_.applyTransposeToVector(data_.normals[(size_t)c.normal])
+                                : computedNormals_[(size_t)c.position];
             const Vec3 n = normalizeOr(n0, face);
             mc.normal = n;
             uvOf(c, mc.u, mc.v);
@@ -198,8 +206,8 @@ public:
 
 private:
     void uvOf(const MeshData::Corner& c, float& u, float& v) const {
-        u = c.uv >= 0 ? data_.uvs[2 * c.uv] : 0.0f;
-        v = c.uv >= 0 ? data_.uvs[2 * c.uv + 1] : 0.0f;
+        u = data_.hasUvs ? data_.uvs[2 * (size_t)c.uv] : 0.0f;
+        v = data_.hasUvs ? data_.uvs[2 * (size_t)c.uv + 1] : 0.0f;
     }
 
     const MeshData& data_;

@@ -145,5 +145,15 @@ TEST(AppendMesh, OneStepEqualsPrepareThenAppendByteForByte) {
     }
 }
 
+#ifndef NDEBUG
+// prepareMesh relies on the MeshData contract of scene/obj_reader.h: a debug build stops on a mesh that
+// breaks it instead of reading past its arrays.
+TEST(PrepareMeshDeathTest, AssertsTheObjMeshContract) {
+    MeshData m = quad(false);
+    m.corners[4].normal = 7;  // one normal, index 7
+    EXPECT_DEATH(prepareMesh(m, Affine3{}), "contract");
+}
+#endif
+
 }  // namespace
 }  // namespace trazo

@@ -2,8 +2,12 @@
 #include "scene/obj_reader.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
+#include <filesystem>
 #include <fstream>
+#include <limits>
+#include <utility>
 
 #include "test_paths.h"
 
@@ -140,7 +144,152 @@ INSTANTIATE_TEST_SUITE_P(
         BadObj{"v 0 0 0\nv 1 0 0\nf 1 2\n", "bad.obj:3: error: a face needs at least 3 vertices, got 2"},
         BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x3\n", "bad.obj:4:7: error: malformed face vertex 'x3'"},
         BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1/1/1 2 3\n", "bad.obj:4:3: error: malformed face vertex '1/1/1/1'"},
-        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\n", "bad.obj: error: OBJ file has no faces"}));
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\n", "bad.obj: error: OBJ file has no faces"},
+        BadObj{"", "bad.obj: error: OBJ file has no faces (the file is empty)"},
+        BadObj{"hello\nworld\n", "bad.obj: error: OBJ file has no faces (nor any vertex: is it an OBJ file?)"}));
+
+// Indices that do not fit what atoi (tinyobjloader) reads are refused as written, before tinyobjloader
+// wraps them (4294967297 would read as 1); -9223372036854775808 is never negated.
+INSTANTIATE_TEST_SUITE_P(
+    HugeIndices, ObjReaderErrorTest,
+    ::testing::Values(
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9223372036854775808\n",
+               "bad.obj:4:7: error: vertex index -9223372036854775808 is out of range (an OBJ file holds at most "
+               "67108864)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9223372036854775807\n",
+               "bad.obj:4:7: error: vertex index 9223372036854775807 is out of range (an OBJ file holds at most "
+               "67108864)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999999999\n",
+               "bad.obj:4:7: error: vertex index 99999999999999999999999999 is out of range (an OBJ file holds at "
+               "most 67108864)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967297\n",
+               "bad.obj:4:7: error: vertex index 4294967297 is out of range (an OBJ file holds at most 67108864)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2147483648\n",
+               "bad.obj:4:7: error: vertex index 2147483648 is out of range (an OBJ file holds at most 67108864)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//-2147483649\n",
+               "bad.obj:5:13: error: normal index -2147483649 is out of range (an OBJ file holds at most 67108864)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/67108865\n",
+               "bad.obj:5:11: error: texture coordinate index 67108865 is out of range (an OBJ file holds at most "
+               "67108864)"},
+        // Within the limit but past the file: judged on what tinyobjloader read.
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 67108864\n",
+               "bad.obj:4:7: error: vertex index 67108864 is out of range (the file has 3)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -2147483648\n",
+               "bad.obj:4:7: error: vertex index -2147483648 is out of range (an OBJ file holds at most 67108864)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -67108864\n",
+               "bad.obj:4:7: error: vertex index -67108864 is out of range (only 3 before this line)"}));
+
+// Normal and uv indices are judged like positions, on every corner, whether or not the attribute is kept
+// (one given on some faces only is dropped, but an index out of range is still an error).
+INSTANTIATE_TEST_SUITE_P(
+    AttributeIndices, ObjReaderErrorTest,
+    ::testing::Values(
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//1\n",
+               "bad.obj:5:8: error: normal index 2 is out of range (the file has 1)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//-2 2//1 3//1\n",
+               "bad.obj:5:3: error: normal index -2 is out of range (only 1 before this line)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2//1 3//1\n",
+               "bad.obj:4:3: error: normal index 1 is out of range (the file has 0)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nf 1/-3 2/1 3/2\n",
+               "bad.obj:6:3: error: texture coordinate index -3 is out of range (only 2 before this line)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//9 2//1 3//1\nf 1 2 3\n",
+               "bad.obj:5:3: error: normal index 9 is out of range (the file has 1)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1 2 3\nf 1/1 2/5 3/1\n",
+               "bad.obj:6:7: error: texture coordinate index 5 is out of range (the file has 1)"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 4 5\n",
+               "bad.obj:4:9: error: vertex index 4 is out of range (the file has 3)"}));
+
+// Lines, words and bytes that a hostile file may hold: each a located error, never a crash.
+INSTANTIATE_TEST_SUITE_P(
+    HostileBytes, ObjReaderErrorTest,
+    ::testing::Values(
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 # note\n",
+               "bad.obj:4: error: malformed face: tinyobjloader reads text after its vertices (such as a # comment) "
+               "as vertex index 0"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 +-3\n", "bad.obj:4:7: error: malformed face vertex '+-3'"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3/\n", "bad.obj:4:7: error: malformed face vertex '3/'"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -\n", "bad.obj:4:7: error: malformed face vertex '-'"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv +-1 1 0\nf 1 2 3\n", "bad.obj:3:3: error: '+-1' is not a finite number"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 \x01\xff\nf 1 2 3\n", "bad.obj:3:7: error: '?\?' is not a finite number"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1e39\nf 1//1 2//1 3//1\n",
+               "bad.obj:4:8: error: '1e39' is not a finite number"},
+        BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 inf\nf 1/1 2/1 3/1\n",
+               "bad.obj:4:6: error: 'inf' is not a finite number"}));
+
+TEST(ObjReaderTest, NulBytesNeverCutAMessage) {
+    Diagnostics diags;
+    const char raw[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\0\nf 1 2 3\n";
+    const std::string text(raw, sizeof raw - 1);
+    EXPECT_FALSE(readObjText(text, "nul.obj", diags));
+    EXPECT_EQ(firstError(diags), "nul.obj:3:7: error: '0?' is not a finite number");
+}
+
+TEST(ObjReaderTest, OverlongLinesAreRefusedBeforeTheyAreParsed) {
+    Diagnostics diags;
+    const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf" + std::string(kMaxObjLineBytes, ' ') + "1 2 3\n";
+    EXPECT_FALSE(readObjText(text, "long.obj", diags));
+    EXPECT_EQ(firstError(diags), "long.obj:4: error: line of " + std::to_string(kMaxObjLineBytes + 6) +
+                                     " bytes; the OBJ reader takes lines of at most " +
+                                     std::to_string(kMaxObjLineBytes));
+    // A long \n line cut short by lone \r breaks is as many lines for tinyobjloader: accepted.
+    std::string manyLines = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    while (manyLines.size() <= kMaxObjLineBytes + 100) manyLines += "f 1 2 3\r";
+    Diagnostics fine;
+    EXPECT_TRUE(readObjText(manyLines, "cr.obj", fine)) << firstError(fine);
+}
+
+// Every mesh the reader returns keeps the contract of obj_reader.h.
+TEST(ObjReaderTest, AcceptedMeshesKeepTheContract) {
+    for (const char* text : {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+                             "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1 3 2\n",
+                             "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\nf -3 -2 -1\n",
+                             "f 1/1/1 2/1/1 3/1/1 4/1/1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvn 0 0 1\n",
+                             "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n"}) {
+        Diagnostics diags;
+        const auto mesh = readObjText(text, "ok.obj", diags);
+        ASSERT_TRUE(mesh) << text << firstError(diags);
+        EXPECT_EQ(objMeshContractViolation(*mesh), "") << text;
+    }
+}
+
+// The contract check itself, on meshes made by hand.
+TEST(ObjMeshContract, NamesTheFirstViolation) {
+    MeshData good;
+    good.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    good.corners = {{0, -1, -1}, {1, -1, -1}, {2, -1, -1}};
+    EXPECT_EQ(objMeshContractViolation(good), "");
+
+    MeshData m = good;
+    m.corners[1].position = 3;
+    EXPECT_EQ(objMeshContractViolation(m), "corner 1: vertex index 3 is out of range (the mesh has 3)");
+    m = good;
+    m.corners[2].position = -1;
+    EXPECT_EQ(objMeshContractViolation(m), "corner 2: vertex index -1 is out of range (the mesh has 3)");
+    m = good;
+    m.normals = {Vec3(0, 0, 1)};
+    m.corners[0].normal = 0;  // a normal on one corner, the mesh flagged as without
+    EXPECT_EQ(objMeshContractViolation(m),
+              "corner 0: normal index 0 given, but the mesh is flagged as without normals");
+    m.hasNormals = true;  // flagged, but corners 1 and 2 have none
+    EXPECT_EQ(objMeshContractViolation(m), "corner 1: normal index -1 is out of range (the mesh has 1)");
+    m = good;
+    m.hasUvs = true;
+    m.uvs = {0, 0};
+    for (auto& c : m.corners) c.uv = 1;
+    EXPECT_EQ(objMeshContractViolation(m), "corner 0: texture coordinate index 1 is out of range (the mesh has 1)");
+    m = good;
+    m.positions[1].y = std::numeric_limits<float>::infinity();
+    EXPECT_EQ(objMeshContractViolation(m), "vertex 1 is not finite");
+    m = good;
+    m.uvs = {0, 0, 1};
+    EXPECT_NE(objMeshContractViolation(m), "");
+    m = good;
+    m.corners.pop_back();
+    EXPECT_NE(objMeshContractViolation(m), "");
+    m = good;
+    m.corners.clear();
+    EXPECT_EQ(objMeshContractViolation(m), "no faces");
+}
 
 TEST(ObjReaderTest, UnreadableFileNamesPathAndReason) {
     Diagnostics diags;
@@ -148,14 +297,29 @@ TEST(ObjReaderTest, UnreadableFileNamesPathAndReason) {
     EXPECT_EQ(firstError(diags), "/nonexistent/trazo/x.obj: error: cannot read OBJ file: No such file or directory");
 }
 
-// tinyobjloader also breaks lines at a lone \r, which the line check does not: a face hidden behind one
-// must not reach the mesh with an index past what was read (it once did, as index 8 of 3 positions).
+// tinyobjloader also breaks lines at a lone \r: a face or vertex behind one is read and checked like any other
+// (once it reached the mesh with an index past what was read, as index 8 of 3 positions), and reported at
+// its line as the reader counts them.
 TEST(ObjReaderTest, FacesBehindALoneCarriageReturnAreRangeChecked) {
-    for (const char* text : {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nx\rf 1 2 9\n",
-                             "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nx\rf 1 2 -5\n"}) {
+    const char* const kHint = " (lines counted as OBJ readers count them: a lone \\r also ends a line)";
+    const std::pair<const char*, std::string> cases[] = {
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nx\rf 1 2 9\n",
+         "cr.obj:6:7: error: vertex index 9 is out of range (the file has 3)" + std::string(kHint)},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n# comment\rf 1 2 -5\n",
+         "cr.obj:6:7: error: vertex index -5 is out of range (only 3 before this line)" + std::string(kHint)},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\ng part\rf 1//1 2//1 3//7\n",
+         "cr.obj:7:13: error: normal index 7 is out of range (the file has 1)" + std::string(kHint)},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n# c\rf 1/1 2/1 3/4\n",
+         "cr.obj:7:11: error: texture coordinate index 4 is out of range (the file has 1)" + std::string(kHint)},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\ng a\rv 1e39 0 0\n",
+         "cr.obj:6:3: error: '1e39' is not a finite number" + std::string(kHint)},
+        {"v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\rf 1 2 4\r",  // a classic Mac file: every line ends at \r
+         "cr.obj:5:7: error: vertex index 4 is out of range (the file has 3)" + std::string(kHint)},
+    };
+    for (const auto& [text, expected] : cases) {
         Diagnostics diags;
         EXPECT_FALSE(readObjText(text, "cr.obj", diags)) << text;
-        EXPECT_TRUE(diags.hasErrors());
+        EXPECT_EQ(firstError(diags), expected);
     }
 }
 
@@ -189,6 +353,17 @@ TEST(ObjReaderTest, LargeTextsReadAsSmallOnes) {
     EXPECT_EQ(mesh->corners[last].position, (n + 1) * (n + 1) - 1);
     EXPECT_EQ(mesh->corners[last + 1].position, (n + 1) * (n + 1) - n - 2);
 
+    // A face in the last third, behind a lone \r, reaching before the file's start: found at the join.
+    const int lines = (n + 1) * (n + 1) + 2 * n * n;
+    Diagnostics hidden;
+    EXPECT_FALSE(readObjText(grid + "# x\rf 1 2 -" + std::to_string((n + 1) * (n + 1) + 1) + "\n", "grid.obj", hidden));
+    EXPECT_EQ(firstError(hidden).rfind("grid.obj:" + std::to_string(lines + 2) + ":7: error: vertex index -" +
+                                           std::to_string((n + 1) * (n + 1) + 1) + " is out of range (only " +
+                                           std::to_string((n + 1) * (n + 1)) + " before this line)",
+                                       0),
+              0u)
+        << firstError(hidden);
+
     Diagnostics bad;
     EXPECT_FALSE(readObjText(grid + "v 1 oops 2\n", "grid.obj", bad));
     EXPECT_EQ(firstError(bad), "grid.obj:" + std::to_string((n + 1) * (n + 1) + 2 * n * n + 1) +
@@ -201,6 +376,37 @@ TEST(ObjReaderTest, ManyErrorsAreCapped) {
     Diagnostics diags;
     EXPECT_FALSE(readObjText(text, "many.obj", diags));
     EXPECT_EQ(diags.items.size(), 21u);  // 20 errors, then one saying the rest is not checked
+}
+
+// The reproducers through the command line: the render exits with status 2 naming the OBJ file's line,
+// writes no image, and never crashes (run under ASan + UBSan too).
+TEST(ObjReaderCli, HostileMeshesStopTheRenderWithTheirLine) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n# c\rf 1 2 9\n", "m.obj:6:7: error: vertex index 9"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\ng g\rf 1//1 2//1 3//7\n",
+         "m.obj:7:13: error: normal index 7"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9223372036854775808\n",
+         "m.obj:4:7: error: vertex index -9223372036854775808"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967297\n", "m.obj:4:7: error: vertex index 4294967297"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/2\n", "m.obj:5:11: error: texture coordinate index 2"},
+    };
+    const std::string dir = test::tempPath("obj_cli");
+    std::filesystem::create_directories(dir);
+    const std::string scene = dir + "/s.scene", image = dir + "/out.png", errors = dir + "/stderr.txt";
+    std::ofstream(scene) << "SceneSettings\n{\n RenderWidth 8\n RenderHeight 8\n}\nCamera\n{\n POV 0 0 5\n}\n"
+                            "PointLight\n{\n Position 0 5 5\n}\nMesh\n{\n Source \"m.obj\"\n}\n";
+    for (const auto& [obj, expected] : cases) {
+        std::ofstream(dir + "/m.obj", std::ios::binary) << obj;
+        std::filesystem::remove(image);
+        const std::string command = test::trazoBinary() + " --render " + scene + " -o " + image +
+                                    " --quiet --spp 1 --backend cpu 2>" + errors + " >/dev/null";
+        const int raw = std::system(command.c_str());
+        ASSERT_TRUE(WIFEXITED(raw)) << obj;
+        EXPECT_EQ(WEXITSTATUS(raw), 2) << obj;
+        const std::string stderrText = test::readFileText(errors);
+        EXPECT_NE(stderrText.find(dir + "/" + expected), std::string::npos) << stderrText;
+        EXPECT_FALSE(std::filesystem::exists(image)) << obj;
+    }
 }
 
 }  // namespace
