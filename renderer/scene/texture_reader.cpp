@@ -7,7 +7,8 @@
 #include <mutex>
 #include <string>
 
-#include "scene/block_lexer.h"
+#include "io/text_file.h"
+#include "scene/texture_header.h"
 
 namespace trazo {
 namespace {
@@ -44,30 +45,56 @@ void copyTexels(FIBITMAP* converted, bool isFloat, TextureImage& image) {
     }
 }
 
+FREE_IMAGE_FORMAT freeImageFormat(TextureFormat format) {
+    switch (format) {
+        case TextureFormat::Png: return FIF_PNG;
+        case TextureFormat::Jpeg: return FIF_JPEG;
+        case TextureFormat::Bmp: return FIF_BMP;
+        case TextureFormat::Tga: return FIF_TARGA;
+        case TextureFormat::Exr: return FIF_EXR;
+        case TextureFormat::Hdr: return FIF_HDR;
+        case TextureFormat::Pfm: return FIF_PFM;
+    }
+    return FIF_UNKNOWN;
+}
+
+struct MemoryDeleter {
+    void operator()(FIMEMORY* m) const {
+        if (m) FreeImage_CloseMemory(m);
+    }
+};
+
 }  // namespace
 
 std::shared_ptr<const TextureImage> readTextureImage(const std::string& path, const SourceLocation& where,
                                                      Diagnostics& diags) {
-    // FreeImage_Load gives no OS reason, so check that the file opens first.
-    std::string reason;
-    if (!checkReadable(path, reason)) {
+    // FreeImage is not safe on hostile files (a corrupt Sun RAS header crashes it, WBMP and IFF headers that
+    // claim huge sizes run for minutes), so it decodes only bytes read here, from a regular file, in an accepted
+    // format named by their signature, whose header's size is bounded.
+    std::string bytes, reason;
+    if (!readWholeFile(path, bytes, reason, kMaxTextureFileBytes)) {
         diags.error(where, "cannot read texture '" + path + "': " + reason);
+        return nullptr;
+    }
+    TextureHeader header{};
+    if (!readTextureHeader(bytes, path, header, reason)) {
+        diags.error(where, "cannot decode texture '" + path + "': " + reason);
         return nullptr;
     }
 
     std::lock_guard<std::mutex> lock(gFreeImageMutex);
     gFreeImageMessage.clear();
     FreeImage_SetOutputMessage(captureFreeImageMessage);
-    FREE_IMAGE_FORMAT fif = FreeImage_GetFileType(path.c_str(), 0);
-    if (fif == FIF_UNKNOWN) fif = FreeImage_GetFIFFromFilename(path.c_str());
-    if (fif == FIF_UNKNOWN || !FreeImage_FIFSupportsReading(fif)) {
-        diags.error(where, "cannot decode texture '" + path + "': unknown image format");
-        return nullptr;
-    }
-    Bitmap loaded(FreeImage_Load(fif, path.c_str(), 0));
+    const std::unique_ptr<FIMEMORY, MemoryDeleter> memory(
+        FreeImage_OpenMemory(reinterpret_cast<BYTE*>(bytes.data()), DWORD(bytes.size())));
+    Bitmap loaded(memory ? FreeImage_LoadFromMemory(freeImageFormat(header.format), memory.get(), 0) : nullptr);
     if (!loaded) {
         const std::string why = gFreeImageMessage.empty() ? "the image is damaged or unsupported" : gFreeImageMessage;
         diags.error(where, "cannot decode texture '" + path + "': " + why);
+        return nullptr;
+    }
+    if (FreeImage_GetWidth(loaded.get()) != header.width || FreeImage_GetHeight(loaded.get()) != header.height) {
+        diags.error(where, "cannot decode texture '" + path + "': the image is not the size its header claims");
         return nullptr;
     }
     // 8-bit images of any layout (palette, grey, RGBA) go through 24-bit RGB; wider ones through float RGB.
