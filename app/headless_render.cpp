@@ -3,9 +3,12 @@
 
 #include <chrono>
 #include <cstdio>
+#include <new>
 #include <stdexcept>
+#include <vector>
 
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include "device/flatten.h"
 #include "image/image_writer.h"
@@ -32,6 +35,21 @@ double peakRssMegabytes() {
     return (double)usage.ru_maxrss / 1024.0;
 }
 
+// The host memory a render of width × height holds besides the scene: the backend's accumulation (on the CPU
+// backend; the CUDA backend holds it on the device), its copy read back for the image, and the resolved image.
+// The writer's own buffer (at most 16 bytes a pixel) comes after the accumulation is freed.
+constexpr uint64_t kHostBytesPerPixel = 2 * sizeof(AccumPixel) + sizeof(Vec3);
+
+std::string formatBytes(uint64_t bytes) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%llu bytes (%.1f GiB)", (unsigned long long)bytes,
+                  (double)bytes / (1024.0 * 1024.0 * 1024.0));
+    return text;
+}
+
+int renderScene(const CommandLine& options, const Scene& scene, RenderStats& stats,
+                std::chrono::steady_clock::time_point t0);
+
 }  // namespace
 
 int runHeadlessRender(const CommandLine& options) {
@@ -45,11 +63,30 @@ int runHeadlessRender(const CommandLine& options) {
     stats.scene = options.renderScene;
     stats.seed = options.seed;
 
-    auto t0 = std::chrono::steady_clock::now();
-    Diagnostics diags;
-    const Scene scene = readSceneFile(options.renderScene, diags);
-    printDiagnostics(diags);
-    if (diags.hasErrors()) return 2;
+    // Everything from reading on runs inside the handler: memory exhausted anywhere (a reader's buffers, the
+    // flattened arrays, the backend) is a message and status 1, never an abort, and no image is written.
+    try {
+        const auto t0 = std::chrono::steady_clock::now();
+        Diagnostics diags;
+        const Scene scene = readSceneFile(options.renderScene, diags);
+        if (!diags.hasErrors()) checkRenderBounds(scene, diags);
+        printDiagnostics(diags);
+        if (diags.hasErrors()) return 2;
+        return renderScene(options, scene, stats, t0);
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "trazo: %s: out of memory (std::bad_alloc); nothing was written\n",
+                     options.renderScene.c_str());
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "trazo: %s\n", e.what());
+        return 1;
+    }
+}
+
+namespace {
+
+int renderScene(const CommandLine& options, const Scene& scene, RenderStats& stats,
+                std::chrono::steady_clock::time_point t0) {
     stats.readSeconds = secondsSince(t0);
     const auto buildStart = std::chrono::steady_clock::now();
     FlattenResult flat = flatten(scene);
@@ -68,75 +105,100 @@ int runHeadlessRender(const CommandLine& options) {
     stats.features = describeFeatures(flat.arrays.features);
     stats.parseSeconds = secondsSince(t0);
 
+    // The image's memory, sized up front: refused here, before any pass, rather than after the render.
+    const uint64_t pixels = (uint64_t)stats.width * stats.height;
+    const uint64_t hostBytes = pixels * kHostBytesPerPixel;
+    const uint64_t physical = (uint64_t)sysconf(_SC_PHYS_PAGES) * (uint64_t)sysconf(_SC_PAGESIZE);
+    std::vector<AccumPixel> accum;
+    std::vector<Vec3> image;
+    auto refuseMemory = [&](const char* why) {
+        std::fprintf(stderr, "trazo: a %u×%u render needs %s of memory for its accumulation and image (%u bytes a "
+                             "pixel)%s; use a smaller --width/--height\n",
+                     stats.width, stats.height, formatBytes(hostBytes).c_str(), (unsigned)kHostBytesPerPixel, why);
+        return 1;
+    };
+    if (physical > 0 && hostBytes > physical) return refuseMemory(", more than this machine has");
     try {
-        std::string why;
-        std::unique_ptr<Backend> backend = createBackendFor(flat.arrays, options.backend, options.threads, why);
-        if (!backend) {
-            std::fprintf(stderr, "trazo: cannot use the CUDA backend: %s\n", why.c_str());
-            return 1;
-        }
-        stats.backend = backend->name();
-        stats.device = backend->deviceName();
-        if (!options.quiet || options.backend == BackendChoice::Auto) {
-            std::fprintf(stderr, "trazo: rendering on %s (%s)%s%s\n", stats.backend.c_str(), stats.device.c_str(),
-                         why.empty() ? "" : "; CUDA not used: ", why.c_str());
-        }
+        accum.reserve(pixels);
+        image.reserve(pixels);
+    } catch (const std::bad_alloc&) {
+        return refuseMemory(", which cannot be allocated");
+    }
 
-        // What is needed of the arrays below is taken first: the backend may keep them instead of a copy.
-        const uint32_t cameraPasses = cameraPathPasses(flat.arrays, blocks);
-        t0 = std::chrono::steady_clock::now();
-        backend->uploadMoved(std::move(flat.arrays));
+    std::string why;
+    std::unique_ptr<Backend> backend = createBackendFor(flat.arrays, options.backend, options.threads, why);
+    if (!backend) {
+        std::fprintf(stderr, "trazo: cannot use the CUDA backend: %s\n", why.c_str());
+        return 1;
+    }
+    stats.backend = backend->name();
+    stats.device = backend->deviceName();
+    if (!options.quiet || options.backend == BackendChoice::Auto) {
+        std::fprintf(stderr, "trazo: rendering on %s (%s)%s%s\n", stats.backend.c_str(), stats.device.c_str(),
+                     why.empty() ? "" : "; CUDA not used: ", why.c_str());
+    }
+
+    // What is needed of the arrays below is taken first: the backend may keep them instead of a copy.
+    const uint32_t cameraPasses = cameraPathPasses(flat.arrays, blocks);
+    // Default: one complete estimate (every stratum of every grid on the camera path once:
+    // cameraPathPasses); bounded only by the time or the target error when either is given.
+    const bool openEnded = options.seconds > 0 || options.targetError > 0;
+    const uint32_t passes = options.spp ? *options.spp : (openEnded ? kMaxProgressivePasses : cameraPasses);
+    // A long render says what it will cost before it starts (a time limit bounds it already).
+    if (options.seconds <= 0) {
+        const std::string note = longRenderNote(flat.arrays, blocks, options.targetError > 0 ? cameraPasses : passes,
+                                                !options.spp, stats.width, stats.height);
+        if (!note.empty()) std::fprintf(stderr, "trazo: note: %s\n", note.c_str());
+    }
+    t0 = std::chrono::steady_clock::now();
+    backend->uploadMoved(std::move(flat.arrays));
+    try {
         backend->resize(stats.width, stats.height);
-        stats.uploadSeconds = secondsSince(t0);
+    } catch (const std::bad_alloc&) {
+        return refuseMemory(", which cannot be allocated");
+    }
+    stats.uploadSeconds = secondsSince(t0);
 
-        const FrameParams frame =
-            makeFrameParams(scene, stats.width, stats.height, options.seed, blocks);
-        RenderLimits limits;
-        limits.seconds = options.seconds;
-        limits.targetError = options.targetError;
-        limits.cyclePasses = stats.fullCycle;
-        if (options.targetError > 0 && !splitsHalves(limits.cyclePasses)) {
-            std::fprintf(stderr, "trazo: --target-error: this scene's strata do not repeat within %u passes, so "
-                                 "its error cannot be estimated; use --spp or --time\n", kMaxCyclePasses);
-            return 2;
-        }
-        // Default: one complete estimate (every stratum of every grid on the camera path once:
-        // cameraPathPasses); bounded only by the time or the target error when either is given.
-        const bool openEnded = options.seconds > 0 || options.targetError > 0;
-        limits.passes = options.spp ? *options.spp
-                                    : (openEnded ? kMaxProgressivePasses : cameraPasses);
-        ProgressBar bar(!options.quiet, options.seconds);
-        const RenderOutcome outcome =
-            renderProgressive(*backend, frame, limits, [&](const RenderProgress& p) { bar.update(p); });
-        bar.finish();
-        stats.spp = outcome.passes;
-        stats.renderSeconds = outcome.seconds;
-        stats.rays = outcome.rays;
-        stats.fixedGrid = options.fixedGrid;
-        stats.targetError = options.targetError;
-        stats.reachedTarget = outcome.reachedTarget;
+    const FrameParams frame = makeFrameParams(scene, stats.width, stats.height, options.seed, blocks);
+    RenderLimits limits;
+    limits.seconds = options.seconds;
+    limits.targetError = options.targetError;
+    limits.cyclePasses = stats.fullCycle;
+    if (options.targetError > 0 && !splitsHalves(limits.cyclePasses)) {
+        std::fprintf(stderr, "trazo: --target-error: this scene's strata do not repeat within %u passes, so "
+                             "its error cannot be estimated; use --spp or --time\n", kMaxCyclePasses);
+        return 2;
+    }
+    limits.passes = passes;
+    ProgressBar bar(!options.quiet, options.seconds);
+    const RenderOutcome outcome =
+        renderProgressive(*backend, frame, limits, [&](const RenderProgress& p) { bar.update(p); });
+    bar.finish();
+    stats.spp = outcome.passes;
+    stats.renderSeconds = outcome.seconds;
+    stats.rays = outcome.rays;
+    stats.fixedGrid = options.fixedGrid;
+    stats.targetError = options.targetError;
+    stats.reachedTarget = outcome.reachedTarget;
 
-        std::vector<AccumPixel> accum;
-        backend->readAccumulation(accum);
-        const ErrorEstimate estimate = estimateError(accum);
-        stats.estimatedRelError = estimate.relError;
-        stats.estimateBalanced =
-            estimate.available && splitsHalves(limits.cyclePasses) && outcome.passes % (2 * limits.cyclePasses) == 0;
+    backend->readAccumulation(accum);  // into the capacity reserved above
+    backend.reset();                   // its accumulation is no longer needed: room for the writer's buffer
+    const ErrorEstimate estimate = estimateError(accum);
+    stats.estimatedRelError = estimate.relError;
+    stats.estimateBalanced =
+        estimate.available && splitsHalves(limits.cyclePasses) && outcome.passes % (2 * limits.cyclePasses) == 0;
+    for (const AccumPixel& p : accum) image.push_back(p.estimate());  // resolveImage, into the reserved image
+    std::vector<AccumPixel>().swap(accum);
 
-        std::string error;
-        if (!writeImage(options.output, (int)stats.width, (int)stats.height, resolveImage(accum), error)) {
-            std::fprintf(stderr, "trazo: %s\n", error.c_str());
-            return 1;
-        }
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "trazo: %s\n", e.what());
+    std::string error;
+    if (!writeImage(options.output, (int)stats.width, (int)stats.height, image, error)) {
+        std::fprintf(stderr, "trazo: %s\n", error.c_str());
         return 1;
     }
 
     stats.peakRssMb = peakRssMegabytes();
     if (!options.quiet) std::fputs(formatStatsSummary(stats).c_str(), stderr);
     if (!options.statsPath.empty()) {
-        std::string error;
         if (!writeTextFileAtomically(options.statsPath, formatStatsJson(stats), error)) {
             std::fprintf(stderr, "trazo: %s\n", error.c_str());
             return 1;
@@ -144,5 +206,7 @@ int runHeadlessRender(const CommandLine& options) {
     }
     return 0;
 }
+
+}  // namespace
 
 }  // namespace trazo

@@ -39,8 +39,10 @@ struct SampleStream {
 
 // A pseudo-random permutation of [0, count) chosen by `key`: Kensler's hash-based permutation ("Correlated
 // Multi-Jittered Sampling", Pixar 2013), a bijection on the next power of two walked until it lands in range
-// (fewer than two rounds on average).
+// (fewer than two rounds on average). A count of 0 or 1 has the one answer 0 (0 would otherwise divide by
+// zero: the scene's bounds keep every grid far from a wrapped count, this keeps a kernel safe regardless).
 TRAZO_HD uint32_t permuteIndex(uint32_t i, uint32_t count, uint32_t key) {
+    if (count <= 1u) return 0u;
     uint32_t w = count - 1;
     w |= w >> 1;
     w |= w >> 2;
@@ -73,8 +75,9 @@ TRAZO_HD uint32_t permuteIndex(uint32_t i, uint32_t count, uint32_t key) {
 // The stratum a pixel uses in a pass for a grid of `count` cells: every `count` consecutive passes visit
 // every stratum once, in an order drawn per pixel and per grid. A shuffled order (rather than a sweep)
 // spreads the first passes of a cycle over the whole grid, so an image short of a full cycle is already
-// an unbiased estimate of the whole light or cone, not of one strip of it.
+// an unbiased estimate of the whole light or cone, not of one strip of it. A count of 0 gives stratum 0.
 TRAZO_HD uint32_t stratumForPass(uint32_t seed, uint32_t pixelIndex, uint32_t gridId, uint32_t pass, uint32_t count) {
+    if (count <= 1u) return 0u;
     const uint32_t key = hashCombine(hashCombine(hashU32(seed + 0x68e31da4u), pixelIndex), gridId);
     return permuteIndex(pass % count, count, key);
 }

@@ -38,12 +38,25 @@ struct StrataBlocks {
     }
 };
 
-// The largest divisor of count (≥ 1) that is at most target: a block that tiles the grid exactly. Costs at
-// most target − result steps, none for a whole grid or a block of 1.
+// The largest divisor of count that is at most target (≥ 1): a block that tiles the grid exactly. No search
+// for a whole grid, a block of 1 or a target that divides the grid (every block headlessBlocks chooses);
+// otherwise at most about 2·√count steps, however the target sits against the grid's divisors (a search
+// down from the target alone would take target − 1 steps for a prime grid: ~10⁶ per shading point for a
+// `--blocks` target near a 2^20-cell light). The divisors pair as (d, count/d) with d ≤ √count: for a target
+// at or above √count the answer is count/d for the least such d ≥ count/target if there is one, else the
+// largest divisor below √count; for a smaller target it is the largest divisor at most the target.
+// A count of 0 (a wrapped product, which the scene's bounds exclude) gives 1.
 TRAZO_HD uint32_t blockFor(uint32_t count, uint32_t target) {
-    if (target >= count) return count;
+    if (target >= count) return count > 0u ? count : 1u;
     if (target <= 1u) return 1u;
+    if (count % target == 0u) return target;
     uint32_t b = target;
+    if (uint64_t(target) * target >= count) {
+        uint32_t d = uint32_t((uint64_t(count) + target - 1u) / target);  // count/d ≤ target
+        for (; uint64_t(d) * d <= count; ++d)
+            if (count % d == 0u) return count / d;
+        b = d - 1u;  // ⌊√count⌋: nothing between count/target and √count divides count
+    }
     while (count % b != 0u) --b;
     return b;
 }
@@ -68,8 +81,8 @@ struct StrataKey {
     // directions) while each still visits every block once per P passes.
     TRAZO_HD StrataBlock block(uint32_t grid, uint32_t count, uint32_t target, uint32_t rotation = 0) const {
         const uint32_t size = blockFor(count, target);
-        const uint32_t blocks = count / size;
-        if (blocks == 1) return StrataBlock{0u, 1u, size};
+        const uint32_t blocks = count / size;  // 0 only for a wrapped count of 0: one block, stratum 0
+        if (blocks <= 1u) return StrataBlock{0u, 1u, size};
         const uint32_t first = stratumForPass(seed, pixelIndex, hashCombine(node, grid), pass, blocks);
         return StrataBlock{(first + rotation % blocks) % blocks, blocks, size};
     }

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
+#include <initializer_list>
 #include <numeric>
 #include <vector>
 
 #include "device/feature_mask.h"
+#include "integrator/render_sample.h"
 
 namespace trazo {
 
@@ -62,6 +65,92 @@ StrataBlocks headlessBlocks(const SceneArrays& a) {
     b.indirect = kWholeGrid;
     b.lightAtIndirect = 1;
     return clampToScene(a, b);
+}
+
+namespace {
+
+SourceLocation firstGiven(std::initializer_list<const SourceLocation*> places, const std::string& scenePath) {
+    for (const SourceLocation* at : places)
+        if (!at->file.empty()) return *at;
+    return SourceLocation{scenePath, 0, 0};
+}
+
+std::string formatCount(double x) {
+    char text[32];
+    if (x < 1e6) std::snprintf(text, sizeof text, "%.0f", x);
+    else std::snprintf(text, sizeof text, "%.2g", x);
+    return text;
+}
+
+}  // namespace
+
+bool checkRenderBounds(const Scene& scene, Diagnostics& diags) {
+    bool ok = true;
+    const SceneSettings& s = scene.settings;
+    const std::string bound = std::to_string(kMaxGridStrata);
+    auto quality = [&](const char* name, int q, const SourceLocation& at) {
+        const uint64_t strata = 2 * (uint64_t)std::max(q, 0) * (uint64_t)std::max(q, 0);
+        if (strata <= kMaxGridStrata) return;
+        diags.error(firstGiven({&at, &s.where}, scene.path),
+                    std::string(name) + " " + std::to_string(q) + " asks for 2·q² = " + std::to_string(strata) +
+                        " strata; at most " + bound + " (q ≤ 724) are allowed");
+        ok = false;
+    };
+    quality("ReflectionQuality", s.reflectionQuality, s.reflectionQualityAt);
+    quality("IndirectQuality", s.indirectQuality, s.indirectQualityAt);
+    if ((uint64_t)std::max(s.reflectionSteps, 0) > kMaxReflectionSteps) {
+        diags.error(firstGiven({&s.reflectionStepsAt, &s.where}, scene.path),
+                    "ReflectionSteps " + std::to_string(s.reflectionSteps) + " is more than the " +
+                        std::to_string(kMaxReflectionSteps) + " reflections a ray may take");
+        ok = false;
+    }
+    for (const AreaLight& l : scene.areaLights) {
+        const uint64_t cells = (uint64_t)std::max(l.subdivisionX, 0) * (uint64_t)std::max(l.subdivisionY, 0);
+        if (cells <= kMaxGridStrata) continue;
+        diags.error(firstGiven({&l.subdivisionAt, &l.where}, scene.path),
+                    "Subdivision " + std::to_string(l.subdivisionX) + " " + std::to_string(l.subdivisionY) + " asks for " +
+                        std::to_string(cells) + " cells; an area light has at most " + bound + " (e.g. 1024 1024)");
+        ok = false;
+    }
+    return ok;
+}
+
+double raysPerPixelPass(const SceneArrays& a, const StrataBlocks& blocks) {
+    auto blockOf = [](uint64_t count, uint32_t target) -> double {
+        return count > UINT32_MAX ? (double)count : (double)blockFor((uint32_t)count, target);
+    };
+    auto lightRays = [&](uint32_t target) {
+        double rays = (double)a.pointLights.size();
+        for (const AreaLightData& l : a.areaLights) rays += blockOf((uint64_t)l.cellsU * l.cellsV, target);
+        return rays;
+    };
+    double perHit = lightRays(blocks.areaLight);
+    const uint64_t qi = a.settings.indirectQuality;
+    if ((a.features & kFeatureIndirect) && qi > 0)
+        perHit += blockOf(2 * qi * qi, blocks.indirect) * (1.0 + lightRays(blocks.lightAtIndirect));
+    double chain = 1.0;
+    if (a.features & (kFeatureReflection | kFeatureGlossy))
+        chain += (double)std::min<uint64_t>(a.settings.reflectionSteps, kMaxReflectionDepth);
+    if (a.features & kFeatureRefraction) chain += (double)kMaxTransmissionSegments;
+    const uint64_t k = antialiasingSide(a.settings.antialiasing);
+    return blockOf(k * k, blocks.antialiasing) * chain * (1.0 + perHit);
+}
+
+std::string longRenderNote(const SceneArrays& a, const StrataBlocks& blocks, uint32_t passes, bool defaultPasses,
+                           uint32_t width, uint32_t height) {
+    const double perPixelPass = raysPerPixelPass(a, blocks);
+    const double rays = perPixelPass * passes * width * height;
+    if (rays < kLongRenderRays) return {};
+    std::string note = "this render will trace up to about " + formatCount(rays) + " rays: " +
+                       std::to_string(passes) + (passes == 1 ? " pass" : " passes");
+    if (defaultPasses) {
+        note += passes >= kMaxCyclePasses ? " (the default: the scene's strata cycle, cut at " +
+                                                std::to_string(kMaxCyclePasses) + " passes)"
+                                          : " (the default: one full cycle of the scene's strata)";
+    }
+    note += " of up to " + formatCount(perPixelPass) + " rays a pixel, " + std::to_string(width) + "×" +
+            std::to_string(height) + " pixels; --spp or --time renders less";
+    return note;
 }
 
 StrataBlocks clampToScene(const SceneArrays& a, const StrataBlocks& b) {

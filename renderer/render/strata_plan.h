@@ -7,10 +7,39 @@
 
 #include "device/scene_arrays.h"
 #include "integrator/strata.h"
+#include "scene/diagnostic.h"
+#include "scene/scene.h"
 
 namespace trazo {
 
 constexpr uint32_t kMaxCyclePasses = 1u << 16;
+
+// The bounds of the settings that size a render's work (checkRenderBounds). A stratified grid (an area
+// light's Subdivision nx·ny cells, the 2·q² strata of ReflectionQuality or IndirectQuality) holds at most
+// kMaxGridStrata strata: its counts, products and stratum indices then stay far inside the kernels' 32-bit
+// arithmetic (2^32 wraps to 0 and divided by zero) and exact in float (cell index + jitter), and one full
+// cycle of such a grid is already 2^20 samples a pixel. q ≤ 724 for the qualities, e.g. 1024 × 1024 cells.
+constexpr uint64_t kMaxGridStrata = 1u << 20;
+// ReflectionSteps bounds the mirror chain below each camera ray, so a pass's cost grows with it. Beyond 2^16
+// bounces a mirror of any reflectance below 1 − 10⁻³ has attenuated the ray by e^−65 (and the PendingRay
+// bit field holds 2^27 − 1).
+constexpr uint64_t kMaxReflectionSteps = 1u << 16;
+
+// Reports (file:line of the parameter, else of its block or the scene) every setting above its bound; false
+// when any is. Read-time bounds for the scene language: the render refuses, status 2, before any work.
+bool checkRenderBounds(const Scene& scene, Diagnostics& diags);
+
+// An estimate of the rays one pass traces for a pixel, from above: the pass's antialiasing positions, each a
+// camera ray with its whole reflection chain (ReflectionSteps when the scene reflects) and transmission
+// chain, each point of which takes its block of every light and of the indirect directions (each with its
+// point Q's lights). Mirrors take no shadow rays, so a mirror chain costs less than this says.
+double raysPerPixelPass(const SceneArrays& arrays, const StrataBlocks& blocks);
+
+// What a render of `passes` passes over width × height pixels will trace (raysPerPixelPass), and a line that
+// says so before a long one: empty below kLongRenderRays.
+constexpr double kLongRenderRays = 1e10;  // ~100 s at 100 Mrays/s (a CPU); a minute or so on a GPU
+std::string longRenderNote(const SceneArrays& arrays, const StrataBlocks& blocks, uint32_t passes,
+                           bool defaultPasses, uint32_t width, uint32_t height);
 
 // Passes for one full cycle of every stratified grid the scene uses (antialiasing positions, area-light
 // cells at camera-path points and at indirect hits, glossy strata, indirect directions), each in its blocks:

@@ -22,6 +22,9 @@ struct SceneSettings {
     int indirectQuality = 3;    // q -> 2·q² hemisphere rays
     float colorBleeding = 1.0f;
     int antialiasing = 1;  // 1, 4 or 16
+    // Where the SceneSettings block and the parameters bounded at render time (render/strata_plan.h
+    // checkRenderBounds) were written; empty when not given (a default) or not recorded.
+    SourceLocation where, reflectionQualityAt, reflectionStepsAt, indirectQualityAt;
 };
 
 struct Camera {
@@ -158,6 +161,7 @@ struct AreaLight {
     int subdivisionX = 5;
     int subdivisionY = 5;
     SourceLocation where;
+    SourceLocation subdivisionAt;  // the Subdivision line; empty when not recorded (then `where` is used)
 };
 
 struct Scene {
