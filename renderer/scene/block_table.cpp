@@ -164,11 +164,20 @@ std::span<const ParamSpec<SceneSettings>> sceneSettingsTable() {
         {{"RenderHeight", K::Int, 1, "512", "image height in pixels", C::RenderSize},
          [](T& s, const ParamValue& v) { s.renderHeight = v.integer(); }},
         {{"ReflectionQuality", K::Int, 1, "3", "q: 2·q² glossy reflection rays", C::NonNegative},
-         [](T& s, const ParamValue& v) { s.reflectionQuality = v.integer(); }},
+         [](T& s, const ParamValue& v) {
+             s.reflectionQuality = v.integer();
+             s.reflectionQualityAt = v.at;
+         }},
         {{"ReflectionSteps", K::Int, 1, "1", "maximum reflection depth", C::NonNegative},
-         [](T& s, const ParamValue& v) { s.reflectionSteps = v.integer(); }},
+         [](T& s, const ParamValue& v) {
+             s.reflectionSteps = v.integer();
+             s.reflectionStepsAt = v.at;
+         }},
         {{"IndirectQuality", K::Int, 1, "3", "q: 2·q² hemisphere rays for indirect light", C::NonNegative},
-         [](T& s, const ParamValue& v) { s.indirectQuality = v.integer(); }},
+         [](T& s, const ParamValue& v) {
+             s.indirectQuality = v.integer();
+             s.indirectQualityAt = v.at;
+         }},
         {{"ColorBleeding", K::Real, 1, "1.0", "factor on the indirect light"},
          [](T& s, const ParamValue& v) { s.colorBleeding = v.real(); }},
         {{"Antialiasing", K::Int, 1, "1", "samples per pixel: 1, 4 or 16", C::Antialiasing},
@@ -323,6 +332,7 @@ std::span<const ParamSpec<AreaLight>> areaLightTable() {
          [](T& l, const ParamValue& v) {
              l.subdivisionX = v.integer(0);
              l.subdivisionY = v.integer(1);
+             l.subdivisionAt = v.at;
          }},
     };
     return table;

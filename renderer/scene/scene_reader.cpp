@@ -54,6 +54,7 @@ private:
         if (id == "SceneSettings") {
             SceneSettings settings;  // like Camera, the last block wins as a whole
             readParameters(block, sceneSettingsTable(), settings, diags_);
+            settings.where = block.where;
             scene_.settings = settings;
         } else if (id == "Camera") {
             readCamera(block);
