@@ -208,7 +208,12 @@ private:
             diags_.error(namedAt, "cannot read '" + path + "': " + reason);
             return nullptr;
         }
+        const size_t before = diags_.items.size();
         std::shared_ptr<const Data> data = reader(text, path, diags_);
+        // The file's own errors name its lines; the scene line that named the file follows them.
+        bool failed = false;
+        for (size_t i = before; i < diags_.items.size(); ++i) failed |= diags_.items[i].severity == Severity::Error;
+        if (failed) diags_.error(namedAt, "'" + path + "' (named here) has the errors above");
         if (data) cache[path] = data;
         return data;
     }
