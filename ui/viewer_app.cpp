@@ -407,6 +407,7 @@ int runViewer(const ViewerOptions& options) {
     }
     Diagnostics diags;
     Scene scene = readSceneFile(options.scenePath, diags);
+    if (!diags.hasErrors()) checkRenderBounds(scene, diags);  // as headless: no grid the kernels cannot count
     printDiagnostics(diags);
     if (diags.hasErrors()) return 2;
 
