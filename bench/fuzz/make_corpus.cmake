@@ -5,7 +5,6 @@
 #   corpus/obj/      scenes/assets/*.obj of at most MAX_SEED_BYTES (bunny.obj when generated) + seeds/obj/*
 #   corpus/texture/  scenes/assets/* images of at most MAX_SEED_BYTES + tiny images of every accepted format
 #                    (TEXTURE_SEEDS, written by make_texture_seeds) + seeds/texture/*
-#   corpus/texture_ctest/  the texture corpus without EXR files (see below)
 #   scene_root/      what the seed scenes name, small: every scenes/*.csg, assets/bunny.obj and assets/head.obj
 #                    as tiny meshes, assets/head_*.png as a 4 × 3 PNG
 # Inputs: SOURCE_DIR (the repository), OUT_DIR (bench/fuzz in the build), TEXTURE_SEEDS (a folder).
@@ -40,13 +39,6 @@ copy_small(${CORPUS}/obj ${obj_files})
 file(GLOB image_files ${SOURCE_DIR}/scenes/assets/*.png ${SOURCE_DIR}/scenes/assets/*.jpg
      ${SOURCE_DIR}/scenes/assets/*.exr ${SOURCE_DIR}/scenes/assets/*.hdr ${TEXTURE_SEEDS}/* ${SEEDS}/texture/*)
 copy_small(${CORPUS}/texture ${image_files})
-
-# CTest's texture run (tests/CMakeLists.txt) starts from the seeds without EXR files while OpenEXR's hang on
-# a header cut short is open (regressions/pending/texture/): its seeded mutations reach it within a second.
-file(MAKE_DIRECTORY ${CORPUS}/texture_ctest)
-file(GLOB ctest_images ${CORPUS}/texture/*)
-list(FILTER ctest_images EXCLUDE REGEX "\\.exr$")
-file(COPY ${ctest_images} DESTINATION ${CORPUS}/texture_ctest)
 
 if(csg_files)
   file(COPY ${csg_files} DESTINATION ${ROOT})

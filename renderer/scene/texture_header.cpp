@@ -51,48 +51,72 @@ bool jpegSize(const std::string& b, uint32_t& w, uint32_t& h) {
     return false;
 }
 
-// OpenEXR: the required dataWindow attribute (box2i: xMin, yMin, xMax, yMax) among the header's attributes.
+// The size an OpenEXR attribute of `type` must have, or 0 for types of any size (strings, channel lists).
+uint32_t exrAttributeSize(const std::string& type) {
+    if (type == "box2i" || type == "box2f") return 16;
+    if (type == "v2i" || type == "v2f" || type == "double" || type == "rational") return 8;
+    if (type == "v3i" || type == "v3f") return 12;
+    if (type == "int" || type == "float") return 4;
+    if (type == "timecode") return 8;
+    if (type == "keycode") return 28;
+    if (type == "compression" || type == "lineOrder" || type == "envmap" || type == "deepImageState") return 1;
+    if (type == "chromaticities") return 32;
+    if (type == "m33f") return 36;
+    if (type == "m44f") return 64;
+    if (type == "tiledesc") return 9;
+    return 0;
+}
+
+// OpenEXR: the header's attributes, every one whole and of its type's size, up to the byte that ends them;
+// then the required dataWindow (box2i: xMin, yMin, xMax, yMax). OpenEXR's reader does not stop at the end of
+// the bytes it is given: a header cut short, or a float attribute of size 0, makes it read for ever.
 bool exrSize(const std::string& b, uint32_t& w, uint32_t& h) {
-    size_t i = 8;  // magic, version
+    // Version 2, one part of scan lines: no tiles, deep data or parts (flag bits 9, 11 and 12).
+    if (b.size() < 8 || uint8_t(b[4]) != 2 || (le32(b, 4) & 0x1a00u) != 0) return false;
+    size_t i = 8;
+    bool found = false;
+    int compression = -1;
     while (i < b.size() && b[i] != '\0') {
         const size_t nameEnd = b.find('\0', i);
         if (nameEnd == std::string::npos) return false;
         const size_t typeEnd = b.find('\0', nameEnd + 1);
         if (typeEnd == std::string::npos || typeEnd + 5 > b.size()) return false;
         const std::string name = b.substr(i, nameEnd - i), type = b.substr(nameEnd + 1, typeEnd - nameEnd - 1);
+        if (name.empty() || type.empty() || name.size() > 255 || type.size() > 255) return false;
         const uint32_t size = le32(b, typeEnd + 1);
         const size_t value = typeEnd + 5;
         if (size > b.size() - value) return false;
-        if (name == "dataWindow" && type == "box2i" && size == 16) {
+        const uint32_t expected = exrAttributeSize(type);
+        if (expected != 0 && size != expected) return false;
+        if (expected == 0 && size == 0) return false;
+        if (name == "dataWindow") {
+            if (type != "box2i") return false;
             const int64_t xMin = int32_t(le32(b, value)), yMin = int32_t(le32(b, value + 4));
             const int64_t xMax = int32_t(le32(b, value + 8)), yMax = int32_t(le32(b, value + 12));
             if (xMax < xMin || yMax < yMin) return false;
             const int64_t width = xMax - xMin + 1, height = yMax - yMin + 1;
             w = width > 0xffffffffLL ? 0xffffffffu : uint32_t(width);
             h = height > 0xffffffffLL ? 0xffffffffu : uint32_t(height);
-            return true;
+            found = true;
         }
+        if (name == "compression") compression = uint8_t(b[value]);
         i = value + size;
     }
-    return false;
-}
-
-// Radiance HDR: header lines up to an empty one, then "-Y H +X W" (or another orientation).
-bool hdrSize(const std::string& b, uint32_t& w, uint32_t& h) {
-    const size_t end = b.find("\n\n");
-    if (end == std::string::npos) return false;
-    const size_t lineEnd = b.find('\n', end + 2);
-    const std::string line = b.substr(end + 2, (lineEnd == std::string::npos ? b.size() : lineEnd) - end - 2);
-    char a1[3] = {}, a2[3] = {};
-    unsigned long n1 = 0, n2 = 0;
-    char s1, s2;
-    if (std::sscanf(line.c_str(), " %c%c %lu %c%c %lu", &s1, &a1[0], &n1, &s2, &a2[0], &n2) != 6) return false;
-    if ((s1 != '+' && s1 != '-') || (s2 != '+' && s2 != '-')) return false;
-    const bool yFirst = a1[0] == 'Y';
-    if ((a1[0] != 'X' && a1[0] != 'Y') || a2[0] != (yFirst ? 'X' : 'Y')) return false;
-    const unsigned long rows = yFirst ? n1 : n2, columns = yFirst ? n2 : n1;
-    w = columns > 0xffffffffUL ? 0xffffffffu : uint32_t(columns);
-    h = rows > 0xffffffffUL ? 0xffffffffu : uint32_t(rows);
+    if (i >= b.size() || !found || compression < 0) return false;
+    // OpenEXR reads past the bytes it is given without stopping (FreeImage's memory stream), so every read it
+    // will make must lie inside them: the offset table (a block of lines per entry, as many lines as the
+    // compression groups) and each block's header (y, data size) and data.
+    static const int kLinesPerBlock[] = {1, 1, 1, 16, 32, 16, 32, 32, 32, 256};  // by compression, 0–9
+    if (compression > 9) return false;
+    const uint64_t blocks = (uint64_t(h) + kLinesPerBlock[compression] - 1) / kLinesPerBlock[compression];
+    const size_t table = i + 1;
+    if (h > kMaxTextureSide || blocks * 8 > b.size() - table) return false;
+    for (uint64_t k = 0; k < blocks; ++k) {
+        const uint64_t offset = uint64_t(le32(b, table + 8 * k)) | uint64_t(le32(b, table + 8 * k + 4)) << 32;
+        if (offset < table + blocks * 8 || offset > b.size() || b.size() - offset < 8) return false;
+        const uint32_t dataSize = le32(b, size_t(offset) + 4);
+        if (dataSize > b.size() - offset - 8) return false;
+    }
     return true;
 }
 
@@ -114,9 +138,7 @@ const char* textureFormatName(TextureFormat format) {
         case TextureFormat::Png: return "PNG";
         case TextureFormat::Jpeg: return "JPEG";
         case TextureFormat::Bmp: return "BMP";
-        case TextureFormat::Tga: return "TGA";
         case TextureFormat::Exr: return "EXR";
-        case TextureFormat::Hdr: return "HDR";
         case TextureFormat::Pfm: return "PFM";
     }
     return "?";
@@ -143,23 +165,18 @@ bool readTextureHeader(const std::string& b, const std::string& path, TextureHea
         header.format = TextureFormat::Exr;
         sized = exrSize(b, w, h);
     } else if (startsWith(b, "#?", 2)) {
-        header.format = TextureFormat::Hdr;
-        sized = hdrSize(b, w, h);
+        why = "a Radiance HDR file, which Trazo does not read (FreeImage's HDR decoder overflows its buffers on "
+              "damaged headers); convert it to EXR or PFM";
+        return false;
     } else if ((startsWith(b, "PF", 2) || startsWith(b, "Pf", 2)) && b.size() > 2 && std::isspace(uint8_t(b[2]))) {
         header.format = TextureFormat::Pfm;
         sized = pfmSize(b, w, h);
-    } else if (endsWithTga(path) && b.size() >= 18) {
-        // Uncompressed or RLE colour-mapped, true-colour or grey images, 8–32 bits a pixel.
-        const uint8_t type = uint8_t(b[2]), bits = uint8_t(b[16]);
-        const bool knownType = type == 1 || type == 2 || type == 3 || type == 9 || type == 10 || type == 11;
-        if (!knownType || (bits != 8 && bits != 15 && bits != 16 && bits != 24 && bits != 32)) {
-            why = "not a TGA image (its header names no image type Trazo reads)";
-            return false;
-        }
-        header.format = TextureFormat::Tga;
-        w = le16(b, 12), h = le16(b, 14), sized = true;
+    } else if (endsWithTga(path)) {
+        why = "a TGA file, which Trazo does not read (FreeImage's TGA decoder writes through a null pointer on "
+              "damaged headers); convert it to PNG";
+        return false;
     } else {
-        why = "not a PNG, JPEG, BMP, TGA, EXR, HDR or PFM file (the format is read from the file's first bytes)";
+        why = "not a PNG, JPEG, BMP, EXR or PFM file (the format is read from the file's first bytes)";
         return false;
     }
     if (!sized) {

@@ -1,6 +1,7 @@
 // What a texture file says it is before anything is decoded: its format, from the file's own signature,
-// and the size its header claims. Only formats whose FreeImage readers are well kept are accepted; a file
-// is decoded only once its claimed size is known to be within kMaxTextureTexels.
+// and the size its header claims. Only formats whose FreeImage readers survived fuzzing are accepted (PNG,
+// JPEG, BMP, OpenEXR, PFM: TGA and Radiance HDR crashed it within seconds); a file is decoded only once its
+// claimed size is known to be within kMaxTextureTexels and, for EXR, every read is known to stay in the file.
 #pragma once
 
 #include <cstdint>
@@ -8,7 +9,7 @@
 
 namespace trazo {
 
-enum class TextureFormat { Png, Jpeg, Bmp, Tga, Exr, Hdr, Pfm };
+enum class TextureFormat { Png, Jpeg, Bmp, Exr, Pfm };
 
 // 2^25 texels (e.g. 8192 × 4096): 384 MiB as float RGB, the most one texture may take.
 constexpr uint64_t kMaxTextureTexels = uint64_t(1) << 25;
@@ -21,10 +22,9 @@ struct TextureHeader {
     uint32_t width, height;
 };
 
-// Reads the signature and the header's size from the file's first bytes. `path` decides only TGA, the one
-// accepted format without a signature (by its .tga extension, and a header that must look like one). False
-// with a plain reason ("not a PNG, JPEG, BMP, TGA, EXR, HDR or PFM file", "the header claims 2147483647 × 1
-// texels, more than ...") when the file must not be decoded.
+// Reads the signature and the header's size from the file's bytes. `path` only names a refused TGA (which has
+// no signature) by its extension. False with a plain reason ("not a PNG, JPEG, BMP, EXR or PFM file", "the PNG
+// header claims 2147483647 × 1 texels; ...") when the file must not be decoded.
 bool readTextureHeader(const std::string& bytes, const std::string& path, TextureHeader& header, std::string& why);
 
 const char* textureFormatName(TextureFormat format);

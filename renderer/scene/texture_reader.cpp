@@ -50,9 +50,7 @@ FREE_IMAGE_FORMAT freeImageFormat(TextureFormat format) {
         case TextureFormat::Png: return FIF_PNG;
         case TextureFormat::Jpeg: return FIF_JPEG;
         case TextureFormat::Bmp: return FIF_BMP;
-        case TextureFormat::Tga: return FIF_TARGA;
         case TextureFormat::Exr: return FIF_EXR;
-        case TextureFormat::Hdr: return FIF_HDR;
         case TextureFormat::Pfm: return FIF_PFM;
     }
     return FIF_UNKNOWN;
