@@ -28,7 +28,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     object.material = 0;
     object.source = fuzz::sceneRoot() + "/fuzz.obj";
     object.data = mesh;
-    // Unit-ish size whatever the file's scale would be is not needed: the camera sees what it sees.
     scene.meshes.push_back(object);
     fuzz::renderTiny(scene);
     return 0;
