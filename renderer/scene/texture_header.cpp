@@ -67,6 +67,39 @@ uint32_t exrAttributeSize(const std::string& type) {
     return 0;
 }
 
+// Whether an attribute of variable size parses to exactly its `size` bytes at `value`, as OpenEXR will read it:
+// OpenEXR parses a channel list or a preview by its content, not by its declared size, so a list that ends
+// early leaves the reader out of step with the file (reading a bogus attribute of megabytes past the end).
+bool exrVariableAttributeFits(const std::string& b, const std::string& type, size_t value, uint32_t size) {
+    const size_t end = value + size;
+    if (type == "chlist") {
+        // Channels: a name, then pixel type (uint, half, float), pLinear, 3 reserved bytes, x and y sampling;
+        // a texture's channels are never subsampled. An empty name ends the list, on the attribute's last byte.
+        size_t i = value;
+        int channels = 0;
+        while (i < end && b[i] != '\0') {
+            const size_t nameEnd = b.find('\0', i);
+            if (nameEnd == std::string::npos || nameEnd >= end || nameEnd - i > 255) return false;
+            if (end - (nameEnd + 1) < 16) return false;
+            const size_t fields = nameEnd + 1;
+            if (le32(b, fields) > 2 || le32(b, fields + 8) != 1 || le32(b, fields + 12) != 1) return false;
+            if (++channels > 64) return false;
+            i = fields + 16;
+        }
+        return channels > 0 && i + 1 == end;
+    }
+    if (type == "preview") return size >= 8 && uint64_t(le32(b, value)) * le32(b, value + 4) * 4 + 8 == size;
+    if (type == "stringvector") {
+        for (size_t i = value; i < end;) {
+            if (end - i < 4 || le32(b, i) > end - i - 4) return false;
+            i += 4 + le32(b, i);
+        }
+        return true;
+    }
+    if (type == "floatvector") return size % 4 == 0;
+    return true;  // strings and types OpenEXR does not know: read as exactly `size` bytes
+}
+
 // OpenEXR: the header's attributes, every one whole and of its type's size, up to the byte that ends them;
 // then the required dataWindow (box2i: xMin, yMin, xMax, yMax). OpenEXR's reader does not stop at the end of
 // the bytes it is given: a header cut short, or a float attribute of size 0, makes it read for ever.
@@ -88,7 +121,7 @@ bool exrSize(const std::string& b, uint32_t& w, uint32_t& h) {
         if (size > b.size() - value) return false;
         const uint32_t expected = exrAttributeSize(type);
         if (expected != 0 && size != expected) return false;
-        if (expected == 0 && size == 0) return false;
+        if (expected == 0 && (size == 0 || !exrVariableAttributeFits(b, type, value, size))) return false;
         if (name == "dataWindow") {
             if (type != "box2i") return false;
             const int64_t xMin = int32_t(le32(b, value)), yMin = int32_t(le32(b, value + 4));

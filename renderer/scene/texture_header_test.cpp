@@ -115,6 +115,16 @@ TEST(TextureHeaderTest, AbsurdOrDamagedHeadersAreRefused) {
     const std::string exr = fileBytes(writeImage("w.exr", FIF_EXR));
     expectRefused("cut.exr", exr.substr(0, exr.size() / 3), "damaged EXR header");
     expectRefused("tableless.exr", exr.substr(0, exr.find("\0\0", 8) + 1), "damaged EXR header");
+    // A channel list OpenEXR would read out of step with the file: a subsampled first channel, and the list
+    // ended one channel early (the next "attribute" then claims megabytes past the end: OpenEXR hung).
+    const size_t channels = exr.find(std::string("channels\0chlist\0", 16)) + 16 + 4;
+    const size_t firstFields = exr.find('\0', channels) + 1;
+    std::string subsampled = exr;
+    subsampled[firstFields + 8] = 2;
+    expectRefused("subsampled.exr", subsampled, "damaged EXR header");
+    std::string endedEarly = exr;
+    endedEarly[firstFields + 16] = '\0';
+    expectRefused("ended-early.exr", endedEarly, "damaged EXR header");
 }
 
 // A valid header over pixels that do not match it is still FreeImage's to refuse, which it must do cleanly.
