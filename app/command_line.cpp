@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "render/strata_plan.h"
+#include "scene/scene.h"
 
 namespace trazo {
 
@@ -34,8 +35,8 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         ->transform(CLI::CheckedTransformer(backends, CLI::ignore_case));
     app.add_option("--threads", out.threads, "CPU threads (default: all cores)")->check(CLI::Range(1u, 4096u));
     app.add_option("--seed", out.seed, "Random seed; the same seed gives the same image");
-    app.add_option("--width", out.width, "Override RenderWidth")->check(CLI::Range(1u, 16384u));
-    app.add_option("--height", out.height, "Override RenderHeight")->check(CLI::Range(1u, 16384u));
+    app.add_option("--width", out.width, "Override RenderWidth")->check(CLI::Range(1u, unsigned(kMaxRenderSize)));
+    app.add_option("--height", out.height, "Override RenderHeight")->check(CLI::Range(1u, unsigned(kMaxRenderSize)));
     app.add_option("--stats", out.statsPath, "Write timings and counts as JSON to this file");
     app.add_flag("--quiet", out.quiet, "No progress bar");
     app.add_option("--frames", out.frames, "Viewer: run N passes in the window, save --screenshot, exit 0")

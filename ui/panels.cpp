@@ -54,8 +54,8 @@ DirtyFlags drawSceneSettingsPanel(SceneSettings& s) {
     int size[2] = {s.renderWidth, s.renderHeight};
     ImGui::InputInt2("Render size", size);
     if (ImGui::IsItemDeactivatedAfterEdit()) {
-        s.renderWidth = std::clamp(size[0], 1, 16384);
-        s.renderHeight = std::clamp(size[1], 1, 16384);
+        s.renderWidth = std::clamp(size[0], 1, kMaxRenderSize);
+        s.renderHeight = std::clamp(size[1], 1, kMaxRenderSize);
         dirty |= kDirtySize;
     }
     if (editPositiveInt("ReflectionQuality", s.reflectionQuality, 0, 64)) dirty |= kDirtyScene;

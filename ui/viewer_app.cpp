@@ -287,8 +287,8 @@ private:
             // Render at the window's size: the accumulation (and the display) are reallocated when it changes.
             SceneSettings& s = session_.scene().settings;
             if (s.renderWidth != fbw || s.renderHeight != fbh) {
-                s.renderWidth = std::min(fbw, 16384);
-                s.renderHeight = std::min(fbh, 16384);
+                s.renderWidth = std::min(fbw, kMaxRenderSize);
+                s.renderHeight = std::min(fbh, kMaxRenderSize);
                 session_.setRenderSize(uint32_t(s.renderWidth), uint32_t(s.renderHeight));
                 session_.markDirty(kDirtyCamera);
             }

@@ -102,8 +102,10 @@ bool checkRange(const ParamInfo& info, const ParameterLine& line, size_t offset,
                 if (x < 0) return diags.error(at(i), name + " must not be negative, got " + text(i)), false;
                 break;
             case C::RenderSize:
-                if (x < 1 || x > 16384) {
-                    return diags.error(at(i), name + " must be between 1 and 16384, got " + text(i)), false;
+                if (x < 1 || x > kMaxRenderSize) {
+                    return diags.error(at(i), name + " must be between 1 and " + std::to_string(kMaxRenderSize) +
+                                                  ", got " + text(i)),
+                           false;
                 }
                 break;
             case C::Antialiasing:

@@ -21,7 +21,7 @@ enum class ValueCheck {
     None,
     Positive,           // every value > 0 (radius, height, size, subdivision, refraction index)
     NonNegative,        // every value >= 0 (qualities, steps, roughness, CSG indices)
-    RenderSize,         // 1 … 16384
+    RenderSize,         // 1 … kMaxRenderSize
     Antialiasing,       // 1, 4 or 16; anything else is a warning and falls back to 1
     NonZeroVector,      // not of zero length (Direction, Axis)
     RotationAxis,       // the first three values (the axis) not of zero length

@@ -13,6 +13,9 @@
 
 namespace trazo {
 
+// The most pixels an image may have on a side (RenderWidth, RenderHeight, --width, --height, the viewer).
+constexpr int kMaxRenderSize = 16384;
+
 struct SceneSettings {
     Vec3 backgroundColor{0, 0, 0};
     int renderWidth = 512;
