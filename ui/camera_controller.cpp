@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "accel/collapse_bvh.h"
 #include "integrator/camera_frame.h"
 
 namespace trazo {
@@ -19,53 +20,13 @@ void cameraAxes(const Camera& c, Vec3& forward, Vec3& right, Vec3& up) {
     up = f.up;
 }
 
-void addTransformed(Bounds& b, const std::vector<TransformStep>& steps, Vec3 lo, Vec3 hi) {
-    const Affine3 m = composeTransforms(steps);
-    for (int i = 0; i < 8; ++i) {
-        const Vec3 corner{(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z};
-        b.add(m.applyToPoint(corner));
-    }
-}
-
 }  // namespace
 
-Bounds sceneBounds(const Scene& scene) {
-    Bounds b;
-    for (const Sphere& s : scene.spheres) {
-        b.add(s.center - Vec3(s.radius));
-        b.add(s.center + Vec3(s.radius));
-    }
-    for (const Box& box : scene.boxes) addTransformed(b, box.transforms, Vec3(-0.5f), Vec3(0.5f));
-    for (const Cylinder& c : scene.cylinders) {
-        const Vec3 top = c.base + normalize(c.axis) * c.height;
-        for (Vec3 end : {c.base, top}) {
-            b.add(end - Vec3(c.radius));
-            b.add(end + Vec3(c.radius));
-        }
-    }
-    for (const Mesh& mesh : scene.meshes) {
-        if (!mesh.data) continue;
-        const Affine3 m = composeTransforms(mesh.transforms);
-        for (const Vec3& p : mesh.data->positions) b.add(m.applyToPoint(p));
-    }
-    // A CSG solid lies within its primitives (a loose box is enough to frame it).
-    for (const Csg& csg : scene.csgs) {
-        if (!csg.tree) continue;
-        Bounds local;
-        for (const CsgNode& n : csg.tree->nodes) {
-            if (n.kind == CsgNode::Kind::Sphere) {
-                addTransformed(local, n.transforms, n.center - Vec3(n.radius), n.center + Vec3(n.radius));
-            } else if (n.kind == CsgNode::Kind::Box) {
-                addTransformed(local, n.transforms, Vec3(-0.5f), Vec3(0.5f));
-            } else if (n.kind == CsgNode::Kind::Cylinder) {
-                const Vec3 top = n.base + normalize(n.axis) * n.height;
-                addTransformed(local, n.transforms, min(n.base, top) - Vec3(n.radius), max(n.base, top) + Vec3(n.radius));
-            }
-        }
-        if (!local.empty()) addTransformed(b, csg.transforms, local.lo, local.hi);
-    }
-    for (const PointLight& l : scene.pointLights) b.add(l.position);
-    for (const AreaLight& l : scene.areaLights) b.add(l.position);
+Aabb sceneBounds(const SceneArrays& arrays) {
+    Aabb b;
+    if (!arrays.topNodes.empty()) b.grow(wideNodeBounds(arrays.topNodes[0]));
+    for (const PointLightData& l : arrays.pointLights) b.grow(l.position);
+    for (const AreaLightData& l : arrays.areaLights) b.grow(l.rect.center);
     return b;
 }
 
@@ -109,10 +70,10 @@ void CameraController::fly(Camera& camera, float forward, float right, float up,
     camera.poi += move;
 }
 
-void CameraController::frame(Camera& camera, const Bounds& bounds) const {
+void CameraController::frame(Camera& camera, const Aabb& bounds) const {
     if (bounds.empty()) return;
-    const Vec3 centre = (bounds.lo + bounds.hi) * 0.5f;
-    const float radius = std::max(0.5f * length(bounds.hi - bounds.lo), s_.minDistance);
+    const Vec3 centre = bounds.centroid();
+    const float radius = std::max(0.5f * length(bounds.extent()), s_.minDistance);
     Vec3 direction = camera.pov - camera.poi;
     direction = lengthSquared(direction) > 0.0f ? normalize(direction) : Vec3(0, 0, 1);
     // The bounding sphere fits the vertical field of view (the narrower one for landscape images).

@@ -2,22 +2,14 @@
 // Camera (POV, POI, FOV). No window, no GL: the window turns mouse and keys into these calls.
 #pragma once
 
+#include "core/aabb.h"
+#include "device/scene_arrays.h"
 #include "scene/scene.h"
 
 namespace trazo {
 
-struct Bounds {
-    Vec3 lo{1e30f, 1e30f, 1e30f};
-    Vec3 hi{-1e30f, -1e30f, -1e30f};
-    bool empty() const { return lo.x > hi.x; }
-    void add(Vec3 p) {
-        lo = min(lo, p);
-        hi = max(hi, p);
-    }
-};
-
-// World bounds of what a scene draws (shapes, meshes, CSG solids by their primitives, lights).
-Bounds sceneBounds(const Scene& scene);
+// World bounds of what a flattened scene draws (its top-level BVH's root) and of its lights.
+Aabb sceneBounds(const SceneArrays& arrays);
 
 struct CameraControllerSettings {
     float orbitRadiansPerPixel = 0.005f;
@@ -41,7 +33,7 @@ public:
     // WASD/QE: forward/right/up in camera space (each -1, 0 or 1), over `seconds`; moves POV and POI together.
     void fly(Camera& camera, float forward, float right, float up, float seconds) const;
     // F: looks at the centre of `bounds` from the current direction, far enough to see all of it.
-    void frame(Camera& camera, const Bounds& bounds) const;
+    void frame(Camera& camera, const Aabb& bounds) const;
     // R: back to the camera the file gave.
     void reset(Camera& camera, const Camera& fileCamera) const { camera = fileCamera; }
 

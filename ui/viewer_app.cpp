@@ -210,7 +210,7 @@ private:
         for (const InputEvents::Key& k : e.keys) {
             const bool ctrl = k.mods & GLFW_MOD_CONTROL;
             if (k.key == GLFW_KEY_F && !ctrl) {
-                controller_.frame(camera, sceneBounds(session_.scene()));
+                controller_.frame(camera, sceneBounds(session_.arrays()));
                 dirty |= kDirtyCamera;
             } else if (k.key == GLFW_KEY_R && !ctrl) {
                 controller_.reset(camera, session_.fileScene().camera);
@@ -298,7 +298,7 @@ private:
     void apply(const PanelActions& a) {
         Camera& camera = session_.scene().camera;
         DirtyFlags dirty = a.dirty;
-        if (a.frameScene) controller_.frame(camera, sceneBounds(session_.scene()));
+        if (a.frameScene) controller_.frame(camera, sceneBounds(session_.arrays()));
         if (a.resetCamera) controller_.reset(camera, session_.fileScene().camera);
         if (a.frameScene || a.resetCamera || a.restart) dirty |= kDirtyCamera;
         if (dirty) lastEdit_ = Clock::now();

@@ -5,7 +5,7 @@
 #include <functional>
 #include <vector>
 
-#include "accel/aabb.h"
+#include "core/aabb.h"
 #include "accel/bvh_node.h"
 
 namespace trazo {

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "accel/aabb.h"
+#include "core/aabb.h"
 #include "accel/bvh_build.h"
 #include "accel/wide_bvh_node.h"
 

@@ -11,6 +11,9 @@
 #define TRAZO_HD_CALL inline
 #endif
 
+// Marks a point control never reaches (after a switch that returns for every enumerator).
+#define TRAZO_UNREACHABLE() __builtin_unreachable()
+
 // 1 where kernel code takes the device's paths (lane loops instead of SSE, run-time triangle axes, the device's
 // stack sizes, branch-free BRDFs): in CUDA device compilation, and in a host build with
 // TRAZO_EMULATE_DEVICE_PATHS, which runs those paths on the CPU so CI tests them (trazo_device_paths). Only

@@ -6,6 +6,7 @@
 
 #include "accel/bvh_build.h"
 #include "accel/collapse_bvh.h"
+#include "objects/visit_object.h"
 
 #include <cmath>
 
@@ -90,53 +91,18 @@ void flattenTextures(const Scene& scene, SceneArrays& out) {
     }
 }
 
-Aabb objectBounds(const SceneArrays& a, const ObjectRef& o) {
-    Aabb b;
-    switch (o.kind) {
-        case ObjectKind::Sphere: {
-            const SphereShape& s = a.spheres[o.index];
-            b.grow(s.center - Vec3(s.radius));
-            b.grow(s.center + Vec3(s.radius));
-            break;
-        }
-        case ObjectKind::Box:
-            for (int c = 0; c < 8; ++c)
-                b.grow(a.boxes[o.index].worldFromObject.applyToPoint(
-                    Vec3((c & 1) ? 0.5f : -0.5f, (c & 2) ? 0.5f : -0.5f, (c & 4) ? 0.5f : -0.5f)));
-            break;
-        case ObjectKind::Cylinder: {
-            // Each cap is a disk: along axis i it reaches r·√(1 − axisᵢ²) from its centre.
-            const CylinderShape& c = a.cylinders[o.index];
-            const Vec3 reach = Vec3(std::sqrt(std::fmax(0.0f, 1.0f - c.axis.x * c.axis.x)),
-                                    std::sqrt(std::fmax(0.0f, 1.0f - c.axis.y * c.axis.y)),
-                                    std::sqrt(std::fmax(0.0f, 1.0f - c.axis.z * c.axis.z))) * c.radius;
-            for (const Vec3 centre : {c.base, c.base + c.axis * c.height}) {
-                b.grow(centre - reach);
-                b.grow(centre + reach);
-            }
-            break;
-        }
-        case ObjectKind::Csg: {
-            const CsgShape& csg = a.csgs[o.index];
-            const CsgNodeData& root = a.csgNodes[csg.firstNode + csg.nodeCount - 1];
-            b.grow(root.boundsMin);
-            b.grow(root.boundsMax);
-            break;
-        }
-        case ObjectKind::Mesh:
-            b.grow(wideNodeBounds(a.meshNodes[a.meshes[o.index].nodeOffset]));
-            break;
-    }
+// The object's bounds, padded: the shapes' own tests are exact, the box test must never be the one that misses.
+Aabb paddedBounds(const SceneView& view, const ObjectRef& o) {
+    const Aabb b = visitObject(view, o, [&](const auto& shape) { return objectBounds(view, shape); });
     if (b.empty()) return Aabb{Vec3(0.0f), Vec3(0.0f)};  // an empty CSG solid: never hit anyway
-    // A little slack: the shapes' own tests are exact, the box test must never be the one that misses.
-    const Vec3 pad = abs(b.max - b.min) * 1e-5f + abs(b.min) * 1e-6f + abs(b.max) * 1e-6f;
-    return Aabb{b.min - pad, b.max + pad};
+    return b.padded();
 }
 
 // The top-level BVH over every object; objects are reordered into its leaf order.
 void buildTopLevel(SceneArrays& out) {
     std::vector<Aabb> bounds;
-    for (const ObjectRef& o : out.objects) bounds.push_back(objectBounds(out, o));
+    const SceneView view = hostView(out);
+    for (const ObjectRef& o : out.objects) bounds.push_back(paddedBounds(view, o));
     BvhBuildOptions options;
     options.maxLeafSize = 2;
     Bvh bvh = buildBvh(bounds, options);
@@ -176,29 +142,17 @@ FlattenResult flatten(const Scene& scene) {
     MaterialTable materials(scene);
     const SceneSettings& s = scene.settings;
 
-    for (const Sphere& sphere : scene.spheres) {
-        out.objects.push_back({ObjectKind::Sphere, (uint32_t)out.spheres.size(), materials.index(sphere.material)});
-        out.spheres.push_back({sphere.center, sphere.radius});
-    }
-    for (const Box& box : scene.boxes) {
-        const Affine3 worldFromObject = composeTransforms(box.transforms);
-        out.objects.push_back({ObjectKind::Box, (uint32_t)out.boxes.size(), materials.index(box.material)});
-        out.boxes.push_back({inverse(worldFromObject), worldFromObject});
-    }
-    for (const Cylinder& c : scene.cylinders) {
-        out.objects.push_back({ObjectKind::Cylinder, (uint32_t)out.cylinders.size(), materials.index(c.material)});
-        out.cylinders.push_back({c.base, normalize(c.axis), c.height, c.radius});
-    }
-    for (const Csg& csg : scene.csgs) {
-        if (!csg.tree) continue;
-        out.objects.push_back({ObjectKind::Csg, (uint32_t)out.csgs.size(), materials.index(csg.material)});
-        out.csgs.push_back(flattenCsg(csg, out.csgNodes));
-    }
+    // Every object of every kind, kind by kind in the order of objects/object_kinds.h.
+    auto add = [&](ObjectKind kind, const auto& object) {
+        uint32_t index = 0;
+        if (appendObject(object, out, index)) out.objects.push_back({kind, index, materials.index(object.material)});
+    };
+#define TRAZO_X(Shape, array, Kind) \
+    for (const auto& object : scene.array) add(ObjectKind::Kind, object);
+    TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
     for (const Mesh& mesh : scene.meshes) {
-        if (!mesh.data || mesh.data->corners.empty()) continue;
-        const uint32_t index = appendMesh(*mesh.data, composeTransforms(mesh.transforms), out);
-        out.objects.push_back({ObjectKind::Mesh, index, materials.index(mesh.material)});
-        if (!mesh.data->hasUvs && mesh.material != kDefaultMaterial && usesTextures(scene.materials[mesh.material]))
+        if (mesh.data && !mesh.data->hasUvs && mesh.material != kDefaultMaterial && usesTextures(scene.materials[mesh.material]))
             result.unsupported.push_back(mesh.where.file + ":" + std::to_string(mesh.where.line) + ": " + mesh.source +
                                          " has no texture coordinates: the material's textures are ignored on it");
     }

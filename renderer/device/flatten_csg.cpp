@@ -4,7 +4,8 @@
 
 #include <cmath>
 
-#include "geometry/csg.h"
+#include "core/aabb.h"
+#include "objects/csg.h"
 
 namespace trazo {
 
@@ -27,29 +28,15 @@ Affine3 primitiveFromCanonical(const CsgNode& node) {
     }
 }
 
-struct Bounds {
-    Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-};
-
-// Pads by a relative margin so rounding in the slab test never culls a grazing ray.
-Bounds padded(Bounds b) {
-    if (!(b.lo.x <= b.hi.x && b.lo.y <= b.hi.y && b.lo.z <= b.hi.z)) return Bounds{};  // empty stays empty
-    const Vec3 pad = (b.hi - b.lo) * 1e-4f + abs(b.hi) * 1e-6f + abs(b.lo) * 1e-6f;
-    return Bounds{b.lo - pad, b.hi + pad};
-}
-
-Bounds leafBounds(CsgLeafShape shape, const Affine3& worldFromObject) {
+Aabb leafBounds(CsgLeafShape shape, const Affine3& worldFromObject) {
     const Vec3 lo = shape == CsgLeafShape::Sphere ? Vec3(-1, -1, -1)
                     : shape == CsgLeafShape::Box  ? Vec3(-0.5f, -0.5f, -0.5f)
                                                   : Vec3(-1, 0, -1);
     const Vec3 hi = shape == CsgLeafShape::Box ? Vec3(0.5f, 0.5f, 0.5f) : Vec3(1, 1, 1);
-    Bounds b;
-    for (int c = 0; c < 8; ++c) {
-        const Vec3 p = worldFromObject.applyToPoint(Vec3((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z));
-        b.lo = min(b.lo, p);
-        b.hi = max(b.hi, p);
-    }
-    return padded(b);
+    Aabb b;
+    for (int c = 0; c < 8; ++c)
+        b.grow(worldFromObject.applyToPoint(Vec3((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z)));
+    return b.padded();
 }
 
 struct Flattener {
@@ -68,7 +55,7 @@ struct Flattener {
             case CsgNode::Kind::Difference: data.op = CsgOp::Difference; break;
             default: data.op = CsgOp::Leaf;
         }
-        Bounds b;
+        Aabb b;
         uint32_t left = 0, right = 0;
         if (data.op != CsgOp::Leaf) {
             left = visit(node.left, worldFromNode);
@@ -76,7 +63,7 @@ struct Flattener {
             const CsgNodeData& l = at(left);
             const CsgNodeData& r = at(right);
             if (data.op == CsgOp::Union) b = {min(l.boundsMin, r.boundsMin), max(l.boundsMax, r.boundsMax)};
-            else if (data.op == CsgOp::Intersection) b = padded({max(l.boundsMin, r.boundsMin), min(l.boundsMax, r.boundsMax)});
+            else if (data.op == CsgOp::Intersection) b = Aabb{max(l.boundsMin, r.boundsMin), min(l.boundsMax, r.boundsMax)}.padded();
             else b = {l.boundsMin, l.boundsMax};
         } else {
             data.shape = node.kind == CsgNode::Kind::Sphere ? CsgLeafShape::Sphere
@@ -86,8 +73,8 @@ struct Flattener {
             data.objectFromWorld = inverse(worldFromObject);
             b = leafBounds(data.shape, worldFromObject);
         }
-        data.boundsMin = b.lo;
-        data.boundsMax = b.hi;
+        data.boundsMin = b.min;
+        data.boundsMax = b.max;
         const uint32_t self = (uint32_t)nodes.size() - first;
         data.parent = self;  // until the parent is appended
         nodes.push_back(data);
@@ -107,6 +94,13 @@ CsgShape flattenCsg(const Csg& csg, std::vector<CsgNodeData>& nodes) {
     Flattener f{*csg.tree, nodes, (uint32_t)nodes.size()};
     f.visit(csg.tree->root, composeTransforms(csg.transforms));
     return CsgShape{f.first, (uint32_t)nodes.size() - f.first};
+}
+
+bool appendObject(const Csg& csg, SceneArrays& out, uint32_t& index) {
+    if (!csg.tree) return false;
+    index = (uint32_t)out.csgs.size();
+    out.csgs.push_back(flattenCsg(csg, out.csgNodes));
+    return true;
 }
 
 }  // namespace trazo

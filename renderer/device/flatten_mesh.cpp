@@ -301,4 +301,10 @@ uint32_t appendMesh(const MeshData& data, const Affine3& worldFromObject, SceneA
         });
 }
 
+bool appendObject(const Mesh& mesh, SceneArrays& out, uint32_t& index) {
+    if (!mesh.data || mesh.data->corners.empty()) return false;
+    index = appendMesh(*mesh.data, composeTransforms(mesh.transforms), out);
+    return true;
+}
+
 }  // namespace trazo

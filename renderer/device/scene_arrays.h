@@ -1,5 +1,5 @@
-// The flattened scene: plain arrays with 32-bit indices (no pointers, names or STL in what kernels read),
-// plus SceneView, the non-owning view of those arrays in host or device memory that kernels take.
+// SceneArrays: the owning host copy of the flattened scene (what Backend::upload takes), the element types
+// that are not an object kind's (materials, lights), and hostView(), the SceneView of host-resident arrays.
 #pragma once
 
 #include <cstdint>
@@ -7,10 +7,13 @@
 
 #include "accel/wide_bvh_node.h"
 #include "core/vec3.h"
-#include "device/feature_mask.h"
-#include "geometry/csg.h"
-#include "geometry/mesh_shape.h"
-#include "geometry/shapes.h"
+#include "objects/box.h"
+#include "objects/csg.h"
+#include "objects/cylinder.h"
+#include "objects/mesh.h"
+#include "objects/rectangle.h"
+#include "objects/scene_view.h"
+#include "objects/sphere.h"
 #include "shading/texture.h"
 
 namespace trazo {
@@ -27,16 +30,6 @@ struct MaterialData {
     int32_t diffuseTexture, specularTexture, emissiveTexture, normalTexture;  // into textures; -1 = none
 };
 
-enum class ObjectKind : uint32_t { Sphere = 0, Box = 1, Cylinder = 2, Csg = 3, Mesh = 4 };
-
-// One renderable object: which shape array, which element, which material. Objects are stored in the order
-// of the top-level BVH (topNodes), whose leaves cover ranges of them.
-struct ObjectRef {
-    ObjectKind kind;
-    uint32_t index;
-    uint32_t material;
-};
-
 struct PointLightData {
     Vec3 position;
     Vec3 color;
@@ -48,39 +41,8 @@ struct AreaLightData {
     uint32_t cellsU, cellsV;  // Subdivision: strata of the light's surface
 };
 
-// The render settings kernels need, as plain values (from SceneSettings).
-struct RenderSettings {
-    Vec3 background;
-    uint32_t reflectionQuality;
-    uint32_t reflectionSteps;
-    uint32_t indirectQuality;
-    float colorBleeding;
-    uint32_t antialiasing;  // 1, 4 or 16
-};
-
-// Every array of the flattened scene, once: SceneArrays, SceneView, hostView() and the backends' uploads
-// are all generated from this list, so adding an array is a one-line change. X(element type, member name).
-#define TRAZO_SCENE_ARRAYS(X)          \
-    X(SphereShape, spheres)            \
-    X(BoxShape, boxes)                 \
-    X(CylinderShape, cylinders)        \
-    X(CsgShape, csgs)                  \
-    X(CsgNodeData, csgNodes)           \
-    X(ObjectRef, objects)              \
-    X(MaterialData, materials)         \
-    X(PointLightData, pointLights)     \
-    X(AreaLightData, areaLights)       \
-    X(TextureData, textures)           \
-    X(Vec3, texels)                    \
-    X(MeshShape, meshes)               \
-    X(WideBvhNode, meshNodes)          \
-    X(MeshTriangle, triangles)         \
-    X(TriangleCorners, triangleCorners) \
-    X(WideBvhNode, topNodes)
-
-// Owning host copy of the flattened scene; what Backend::upload takes.
 struct SceneArrays {
-#define TRAZO_X(T, name) std::vector<T> name;
+#define TRAZO_X(T, name, ...) std::vector<T> name;
     TRAZO_SCENE_ARRAYS(TRAZO_X)
 #undef TRAZO_X
     RenderSettings settings{};
@@ -91,21 +53,6 @@ struct SceneArrays {
 };
 
 template <typename T>
-struct ArrayView {
-    const T* data = nullptr;
-    uint32_t count = 0;
-    TRAZO_HD const T& operator[](uint32_t i) const { return data[i]; }
-};
-
-struct SceneView {
-#define TRAZO_X(T, name) ArrayView<T> name;
-    TRAZO_SCENE_ARRAYS(TRAZO_X)
-#undef TRAZO_X
-    RenderSettings settings;
-    FeatureMask features;
-};
-
-template <typename T>
 ArrayView<T> viewOf(const std::vector<T>& v) {
     return ArrayView<T>{v.data(), (uint32_t)v.size()};
 }
@@ -113,7 +60,7 @@ ArrayView<T> viewOf(const std::vector<T>& v) {
 // A view of host-resident arrays (the CPU backend renders straight from them).
 inline SceneView hostView(const SceneArrays& a) {
     SceneView view{};
-#define TRAZO_X(T, name) view.name = viewOf(a.name);
+#define TRAZO_X(T, name, ...) view.name = viewOf(a.name);
     TRAZO_SCENE_ARRAYS(TRAZO_X)
 #undef TRAZO_X
     view.settings = a.settings;

@@ -10,10 +10,10 @@
 
 #include "core/affine.h"
 #include "core/ray.h"
-#include "geometry/intersect_box.h"
-#include "geometry/intersect_cylinder.h"
-#include "geometry/intersect_rectangle.h"
-#include "geometry/intersect_sphere.h"
+#include "objects/box.h"
+#include "objects/cylinder.h"
+#include "objects/rectangle.h"
+#include "objects/sphere.h"
 
 namespace trazo {
 namespace {

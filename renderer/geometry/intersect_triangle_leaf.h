@@ -6,7 +6,6 @@
 #include <cstdint>
 
 #include "geometry/intersect_triangle.h"
-#include "geometry/mesh_shape.h"
 
 #if !TRAZO_DEVICE_PATHS && defined(__SSE2__)
 #include <emmintrin.h>
@@ -18,6 +17,11 @@
 namespace trazo {
 
 constexpr uint32_t kMaxLeafTriangles = 4;
+
+// A mesh triangle in world space, as BVH leaves store them (shading data lives apart, objects/mesh.h).
+struct MeshTriangle {
+    Vec3 p0, p1, p2;
+};
 
 // Nearest hit among triangles[0, count) within (tMin, tMax): what a loop over intersectTriangle that
 // narrows tMax keeps, i.e. the smallest t, and of equal ones the first. `which` is its index.

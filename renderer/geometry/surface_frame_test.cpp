@@ -6,9 +6,9 @@
 
 #include <random>
 
-#include "geometry/intersect_box.h"
-#include "geometry/intersect_cylinder.h"
-#include "geometry/intersect_sphere.h"
+#include "objects/box.h"
+#include "objects/cylinder.h"
+#include "objects/sphere.h"
 
 namespace trazo {
 namespace {

@@ -5,17 +5,12 @@
 
 #include "accel/bvh_traverse.h"
 #include "device/scene_arrays.h"
-#include "geometry/csg.h"
-#include "geometry/intersect_box.h"
-#include "geometry/intersect_cylinder.h"
-#include "geometry/intersect_rectangle.h"
-#include "geometry/intersect_sphere.h"
-#include "geometry/intersect_triangle_leaf.h"
+#include "objects/rectangle.h"
+#include "objects/visit_object.h"
 
 namespace trazo {
 
 constexpr uint32_t kNoObject = 0xffffffffu;
-static_assert(kBvhMaxLeafSize <= kMaxLeafTriangles, "a mesh leaf must fit intersectTriangleLeaf");
 
 struct SurfaceHit {
     float t;
@@ -26,56 +21,10 @@ struct SurfaceHit {
     float b1, b2;
 };
 
-// Nearest triangle of the mesh in (tMin, tMax); the normal follows the triangle's winding (p0, p1, p2).
-TRAZO_HD bool intersectMesh(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMin, float tMax,
-                            ClosestStack& stack, ShapeHit& hit) {
-    const TriangleRay tr = makeTriangleRay(ray);
-    const MeshTriangle* triangles = scene.triangles.data + mesh.triangleOffset;
-    uint32_t best = 0;
-    TriangleHit bestHit{};
-    auto leaf = [&](uint32_t first, uint32_t count, float& tNearest) {
-        uint32_t which = 0;
-        if (!intersectTriangleLeaf(tr, triangles + first, count, tMin, tNearest, bestHit, which)) return false;
-        tNearest = bestHit.t;
-        best = first + which;
-        return true;
-    };
-    if (!traverseClosest(scene.meshNodes.data + mesh.nodeOffset, ray, tMin, tMax, stack, leaf)) return false;
-    const MeshTriangle& t = triangles[best];
-    hit.t = bestHit.t;
-    hit.normal = normalize(cross(t.p1 - t.p0, t.p2 - t.p0));
-    hit.triangle = mesh.triangleOffset + best;
-    hit.b1 = bestHit.b1;
-    hit.b2 = bestHit.b2;
-    return true;
-}
-
-TRAZO_HD bool meshBlocks(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMax, AnyStack& stack) {
-    const TriangleRay tr = makeTriangleRay(ray);
-    const MeshTriangle* triangles = scene.triangles.data + mesh.triangleOffset;
-    auto leaf = [&](uint32_t first, uint32_t count, float tLimit) {
-        return triangleLeafBlocks(tr, triangles + first, count, 0.0f, tLimit);
-    };
-    return traverseAny(scene.meshNodes.data + mesh.nodeOffset, ray, 0.0f, tMax, stack, leaf);
-}
-
-// Spheres, boxes, cylinders and CSG solids: every kind but meshes, which traverse a BVH of their own.
-TRAZO_HD bool intersectAnalytic(const SceneView& scene, const ObjectRef& o, const Ray& ray, float tMax, ShapeHit& hit) {
-    switch (o.kind) {
-        case ObjectKind::Sphere: return intersectSphere(scene.spheres[o.index], ray, 0.0f, tMax, hit);
-        case ObjectKind::Box: return intersectBox(scene.boxes[o.index], ray, 0.0f, tMax, hit);
-        case ObjectKind::Cylinder: return intersectCylinder(scene.cylinders[o.index], ray, 0.0f, tMax, hit);
-        case ObjectKind::Csg: return intersectCsg(scene.csgs[o.index], scene.csgNodes.data, ray, 0.0f, tMax, hit);
-        case ObjectKind::Mesh: break;
-    }
-    return false;
-}
-
 // `stack`: the traversal stack a mesh continues on (the top level's, in intersectScene).
 TRAZO_HD bool intersectObject(const SceneView& scene, const ObjectRef& o, const Ray& ray, float tMax,
                               ClosestStack& stack, ShapeHit& hit) {
-    if (o.kind == ObjectKind::Mesh) return intersectMesh(scene, scene.meshes[o.index], ray, 0.0f, tMax, stack, hit);
-    return intersectAnalytic(scene, o, ray, tMax, hit);
+    return visitObject(scene, o, [&](const auto& shape) { return intersectObject(scene, shape, ray, tMax, stack, hit); });
 }
 
 TRAZO_HD bool intersectObject(const SceneView& scene, const ObjectRef& o, const Ray& ray, float tMax, ShapeHit& hit) {
@@ -129,17 +78,10 @@ TRAZO_HD bool occluded(const SceneView& scene, const Ray& ray, float tMax) {
     AnyStack stack{entries, kTraversalStackSize, 0};
     auto leaf = [&](uint32_t first, uint32_t count, float tLimit) {
         for (uint32_t i = first; i < first + count; ++i) {
-            const ObjectRef& o = scene.objects[i];
-            if (o.kind == ObjectKind::Mesh) {
-                if (meshBlocks(scene, scene.meshes[o.index], ray, tLimit, stack)) return true;
-                continue;
-            }
-            if (o.kind == ObjectKind::Sphere) {
-                if (sphereBlocks(scene.spheres[o.index], ray, 0.0f, tLimit)) return true;
-                continue;
-            }
-            ShapeHit hit;
-            if (intersectAnalytic(scene, o, ray, tLimit, hit)) return true;
+            const bool blocks = visitObject(scene, scene.objects[i], [&](const auto& shape) {
+                return objectBlocks(scene, shape, ray, tLimit, stack);
+            });
+            if (blocks) return true;
         }
         return false;
     };

@@ -7,7 +7,7 @@
 #include <numeric>
 #include <vector>
 
-#include "device/feature_mask.h"
+#include "core/feature_mask.h"
 #include "integrator/render_sample.h"
 
 namespace trazo {

@@ -6,7 +6,7 @@
 
 #include <chrono>
 
-#include "device/feature_mask.h"
+#include "core/feature_mask.h"
 
 namespace trazo {
 namespace {

@@ -158,7 +158,7 @@ public:
     void upload(const SceneArrays& a) override {
         std::string why;
         if (!accepts(a, why)) throw std::runtime_error(why);
-#define TRAZO_X(T, name)        \
+#define TRAZO_X(T, name, ...)        \
     device_.name.assign(a.name); \
     view_.name = device_.name.view();
         TRAZO_SCENE_ARRAYS(TRAZO_X)
@@ -237,7 +237,7 @@ private:
     std::string deviceName_;
     bool syncEveryPass_ = false;
     struct DeviceScene {
-#define TRAZO_X(T, name) DeviceArray<T> name;
+#define TRAZO_X(T, name, ...) DeviceArray<T> name;
         TRAZO_SCENE_ARRAYS(TRAZO_X)
 #undef TRAZO_X
     } device_;

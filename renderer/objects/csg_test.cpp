@@ -5,7 +5,7 @@
 #include <random>
 
 #include "device/flatten_csg.h"
-#include "geometry/csg.h"
+#include "objects/csg.h"
 
 namespace trazo {
 namespace {

@@ -1,4 +1,4 @@
-// Ray–CSG intersection (host and device) without allocation: the tree, flattened in post-order, is
+// The CSG solid object kind (host and device): ray intersection without allocation, bounds and flattening. the tree, flattened in post-order, is
 // evaluated by one sweep that keeps each sub-tree's sorted list of [entry, exit] intervals along the ray in
 // a fixed pool. Memory is bounded by the tree size: a list never holds more intervals than its sub-tree
 // has leaves, so kCsgMaxLeaves intervals plus as many for the combine step suffice.
@@ -6,11 +6,16 @@
 
 #include <cstdint>
 
+#include "accel/bvh_traverse.h"
+#include "core/aabb.h"
 #include "core/affine.h"
 #include "core/ray.h"
-#include "geometry/intersect_box.h"
-#include "geometry/intersect_cylinder.h"
-#include "geometry/intersect_sphere.h"
+#include "geometry/surface_frame.h"
+#include "objects/box.h"
+#include "objects/cylinder.h"
+#include "objects/scene_view.h"
+#include "objects/sphere.h"
+#include "scene/scene.h"
 
 namespace trazo {
 
@@ -227,5 +232,36 @@ TRAZO_HD_CALL bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, c
     }
     return false;
 }
+
+// The object kind's interface (objects/visit_object.h dispatches to it). CSG solids have no texture
+// coordinates.
+TRAZO_HD bool intersectObject(const SceneView& scene, const CsgShape& csg, const Ray& ray, float tMax, ClosestStack&,
+                              ShapeHit& hit) {
+    return intersectCsg(csg, scene.csgNodes.data, ray, 0.0f, tMax, hit);
+}
+
+TRAZO_HD bool objectBlocks(const SceneView& scene, const CsgShape& csg, const Ray& ray, float tMax, AnyStack&) {
+    ShapeHit hit;
+    return intersectCsg(csg, scene.csgNodes.data, ray, 0.0f, tMax, hit);
+}
+
+TRAZO_HD SurfacePoint objectSurface(const SceneView&, const CsgShape&, const ShapeHit& hit, Vec3, bool) {
+    return plainSurface(hit);
+}
+
+TRAZO_HD bool objectHasUvs(const SceneView&, const CsgShape&) { return false; }
+
+// The root's bounds: empty (min > max) for a solid that is empty everywhere.
+inline Aabb objectBounds(const SceneView& scene, const CsgShape& csg) {
+    const CsgNodeData& root = scene.csgNodes[csg.firstNode + csg.nodeCount - 1];
+    Aabb b;
+    b.grow(root.boundsMin);
+    b.grow(root.boundsMax);
+    return b;
+}
+
+// Appends the solid's post-order nodes to out.csgNodes and its CsgShape to out.csgs; false for a CSG block
+// whose tree did not load (device/flatten_csg.cpp).
+bool appendObject(const Csg& csg, SceneArrays& out, uint32_t& index);
 
 }  // namespace trazo

@@ -1,14 +1,25 @@
-// Ray–sphere intersection (host and device): the stable quadratic of Ray Tracing Gems ch. 7, made exact
-// where a huge sphere is seen from close by.
+// The sphere object kind (host and device): its shape, ray intersection (the stable quadratic of Ray Tracing
+// Gems ch. 7, made exact where a huge sphere is seen from close by), texture frame, bounds and flattening.
+// Texture frame: u = longitude φ/2π with φ = atan2(−z, x) about +Y, v = 1 − polar angle/π (v = 1 at the top).
 #pragma once
 
+#include "accel/bvh_traverse.h"
+#include "core/aabb.h"
 #include "core/hd.h"
 #include "core/ray.h"
 #include "core/vec3.h"
 #include "geometry/exact_float.h"
-#include "geometry/shapes.h"
+#include "geometry/shape_hit.h"
+#include "geometry/surface_frame.h"
+#include "objects/scene_view.h"
+#include "scene/scene.h"
 
 namespace trazo {
+
+struct SphereShape {
+    Vec3 center;
+    float radius;
+};
 
 // intersectSphere: nearest hit with tMin < t < tMax; fills hit.t and the unit outward normal. From inside
 // the sphere the hit is the exit point, whose outward normal points along the ray.
@@ -100,6 +111,44 @@ TRAZO_HD bool sphereBlocks(const SphereShape& s, const Ray& ray, float tMin, flo
     SphereRoots r;
     if (!sphereRoots(s, ray, r)) return false;
     return (r.tNear > tMin && r.tNear < tMax) || (r.tFar > tMin && r.tFar < tMax);
+}
+
+TRAZO_HD SurfaceFrame sphereFrame(const SphereShape& s, Vec3 p) {
+    const Vec3 n = normalize(p - s.center);
+    const float ring = sqrtf(n.x * n.x + n.z * n.z);
+    const Vec3 tangent = ring > 1e-6f ? Vec3(n.z, 0.0f, -n.x) / ring : anyOrthonormal(n);  // poles: any
+    const float u = wrapUnit(atan2f(-n.z, n.x) * kInvTwoPi);
+    const float v = 1.0f - acosf(fminf(1.0f, fmaxf(-1.0f, n.y))) * kInvPi;
+    return {u, v, tangent, cross(n, tangent)};
+}
+
+// The object kind's interface (objects/visit_object.h dispatches to it).
+TRAZO_HD bool intersectObject(const SceneView&, const SphereShape& s, const Ray& ray, float tMax, ClosestStack&,
+                              ShapeHit& hit) {
+    return intersectSphere(s, ray, 0.0f, tMax, hit);
+}
+
+TRAZO_HD bool objectBlocks(const SceneView&, const SphereShape& s, const Ray& ray, float tMax, AnyStack&) {
+    return sphereBlocks(s, ray, 0.0f, tMax);
+}
+
+TRAZO_HD SurfacePoint objectSurface(const SceneView&, const SphereShape& s, const ShapeHit& hit, Vec3 p, bool wantUv) {
+    return wantUv ? surfaceWithFrame(hit, sphereFrame(s, p)) : plainSurface(hit);
+}
+
+TRAZO_HD bool objectHasUvs(const SceneView&, const SphereShape&) { return true; }
+
+inline Aabb objectBounds(const SceneView&, const SphereShape& s) {
+    return Aabb{s.center - Vec3(s.radius), s.center + Vec3(s.radius)};
+}
+
+// Appends the sphere to out.spheres; `index`: its place there. Templated on the arrays so that this header
+// need not see SceneArrays (device/scene_arrays.h, which includes it).
+template <class Arrays>
+bool appendObject(const Sphere& sphere, Arrays& out, uint32_t& index) {
+    index = (uint32_t)out.spheres.size();
+    out.spheres.push_back({sphere.center, sphere.radius});
+    return true;
 }
 
 }  // namespace trazo

@@ -1,12 +1,21 @@
-// Ray–rectangle intersection (host and device) for area lights: a two-sided planar patch.
+// The rectangle of an area light (host and device): a two-sided planar patch and its ray intersection.
+// Not an object kind: lights are tested one by one after the objects (integrator/scene_intersect.h).
 #pragma once
 
 #include "core/hd.h"
 #include "core/ray.h"
 #include "core/vec3.h"
-#include "geometry/shapes.h"
+#include "geometry/shape_hit.h"
 
 namespace trazo {
+
+// centre ± halfU ± halfV; normal = unit normal.
+struct RectangleShape {
+    Vec3 center;
+    Vec3 halfU;  // half the Width along u
+    Vec3 halfV;  // half the Height along v
+    Vec3 normal;
+};
 
 // Hit with tMin < t < tMax on either side; hit.normal is the rectangle's own normal, never flipped.
 // The edges belong to the rectangle (|s| = 1 or |t| = 1 hits).

@@ -1,4 +1,5 @@
-// Aabb: an axis-aligned bounding box for the BVH builder (host); an empty box has min = +inf, max = −inf.
+// Aabb: the axis-aligned bounding box of the host side (BVH builds, object and CSG bounds, the viewer's
+// framing); an empty box has min = +inf, max = −inf.
 #pragma once
 
 #include <limits>
@@ -27,6 +28,14 @@ struct Aabb {
         if (empty()) return 0.0f;
         const Vec3 e = extent();
         return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
+    }
+    // Grown by a relative margin (a ten-thousandth of the extent, a millionth of the corners' magnitudes) so
+    // that rounding in a slab test never culls a ray the shape's own exact test would hit. Empty boxes come
+    // back as the canonical empty box, which every slab test misses.
+    Aabb padded() const {
+        if (empty()) return Aabb{};
+        const Vec3 pad = abs(max - min) * 1e-4f + abs(max) * 1e-6f + abs(min) * 1e-6f;
+        return Aabb{min - pad, max + pad};
     }
     bool contains(const Aabb& b) const {
         return min.x <= b.min.x && min.y <= b.min.y && min.z <= b.min.z && max.x >= b.max.x &&

@@ -1,13 +1,30 @@
-// Ray–cylinder intersection (host and device): a capped cylinder as its side quadratic plus two disks.
+// The cylinder object kind (host and device): a capped cylinder, its ray intersection (the side quadratic
+// plus two disks), texture frame, bounds and flattening. Texture frame: side u = angle about the axis / 2π,
+// v = height / Height; caps map the disk of radius r to the unit square, centred at (½, ½).
 #pragma once
 
+#include <initializer_list>
+
+#include "accel/bvh_traverse.h"
+#include "core/aabb.h"
 #include "core/hd.h"
 #include "core/ray.h"
 #include "core/vec3.h"
 #include "geometry/exact_float.h"
-#include "geometry/shapes.h"
+#include "geometry/shape_hit.h"
+#include "geometry/surface_frame.h"
+#include "objects/scene_view.h"
+#include "scene/scene.h"
 
 namespace trazo {
+
+// Bottom cap centred at `base`, top cap at base + axis·height.
+struct CylinderShape {
+    Vec3 base;
+    Vec3 axis;  // unit length
+    float height;
+    float radius;
+};
 
 // Nearest hit with tMin < t < tMax among the side and both caps; fills hit.t and the unit outward
 // normal. Closed: a ray through the rim hits. From inside, the hit is the exit point.
@@ -82,6 +99,62 @@ TRAZO_HD bool intersectCylinder(const CylinderShape& cyl, const Ray& ray, float 
     if (!found) return false;
     hit.t = tBest;
     hit.normal = normalize(normal);
+    return true;
+}
+
+// `normal`: the unit outward normal of the hit (tells the side from the caps).
+TRAZO_HD SurfaceFrame cylinderFrame(const CylinderShape& c, Vec3 p, Vec3 normal) {
+    const Vec3 e1 = anyOrthonormal(c.axis);
+    const Vec3 e2 = cross(c.axis, e1);
+    const Vec3 r = p - c.base;
+    const float along = dot(normal, c.axis);
+    if (fabsf(along) > 0.5f) {  // a cap: its normal is ±axis
+        const float s = along > 0.0f ? 1.0f : -1.0f;
+        const Vec3 bitangent = e2 * s;
+        const float scale = 0.5f / c.radius;
+        return {dot(r, e1) * scale + 0.5f, dot(r, bitangent) * scale + 0.5f, e1, bitangent};
+    }
+    const float u = wrapUnit(atan2f(dot(r, e2), dot(r, e1)) * kInvTwoPi);
+    const Vec3 radial = normalize(r - c.axis * dot(r, c.axis));
+    return {u, dot(r, c.axis) / c.height, cross(c.axis, radial), c.axis};
+}
+
+// The object kind's interface (objects/visit_object.h dispatches to it).
+TRAZO_HD bool intersectObject(const SceneView&, const CylinderShape& c, const Ray& ray, float tMax, ClosestStack&,
+                              ShapeHit& hit) {
+    return intersectCylinder(c, ray, 0.0f, tMax, hit);
+}
+
+TRAZO_HD bool objectBlocks(const SceneView&, const CylinderShape& c, const Ray& ray, float tMax, AnyStack&) {
+    ShapeHit hit;
+    return intersectCylinder(c, ray, 0.0f, tMax, hit);
+}
+
+TRAZO_HD SurfacePoint objectSurface(const SceneView&, const CylinderShape& c, const ShapeHit& hit, Vec3 p,
+                                    bool wantUv) {
+    return wantUv ? surfaceWithFrame(hit, cylinderFrame(c, p, hit.normal)) : plainSurface(hit);
+}
+
+TRAZO_HD bool objectHasUvs(const SceneView&, const CylinderShape&) { return true; }
+
+inline Aabb objectBounds(const SceneView&, const CylinderShape& c) {
+    // Each cap is a disk: along axis i it reaches r·√(1 − axisᵢ²) from its centre.
+    const Vec3 reach = Vec3(std::sqrt(std::fmax(0.0f, 1.0f - c.axis.x * c.axis.x)),
+                            std::sqrt(std::fmax(0.0f, 1.0f - c.axis.y * c.axis.y)),
+                            std::sqrt(std::fmax(0.0f, 1.0f - c.axis.z * c.axis.z))) * c.radius;
+    Aabb b;
+    for (const Vec3 centre : {c.base, c.base + c.axis * c.height}) {
+        b.grow(centre - reach);
+        b.grow(centre + reach);
+    }
+    return b;
+}
+
+// Appends the cylinder to out.cylinders (templated on the arrays: see the sphere's appendObject).
+template <class Arrays>
+bool appendObject(const Cylinder& c, Arrays& out, uint32_t& index) {
+    index = (uint32_t)out.cylinders.size();
+    out.cylinders.push_back({c.base, normalize(c.axis), c.height, c.radius});
     return true;
 }
 

@@ -1,0 +1,133 @@
+// The box object kind (host and device): the unit cube [-0.5, 0.5]³ mapped by an affine transform (any
+// parallelepiped), its ray intersection (a slab test in the box's object space), texture frame, bounds and
+// flattening. Texture frame: each face maps its unit square to [0,1]²; side faces have v up (+Y of the box),
+// the top face has u = +X and v = −Z, the bottom u = +X and v = +Z (all in the box's object space).
+#pragma once
+
+#include "accel/bvh_traverse.h"
+#include "core/aabb.h"
+#include "core/affine.h"
+#include "core/hd.h"
+#include "core/ray.h"
+#include "core/vec3.h"
+#include "geometry/shape_hit.h"
+#include "geometry/surface_frame.h"
+#include "objects/scene_view.h"
+#include "scene/scene.h"
+
+namespace trazo {
+
+// Both transforms: rays go to object space, normals and tangents come back.
+struct BoxShape {
+    Affine3 objectFromWorld;
+    Affine3 worldFromObject;
+};
+
+// Nearest hit with tMin < t < tMax; fills hit.t and the unit outward normal. The box is closed: a
+// ray lying in a face's plane counts as inside that slab. From inside, the hit is the exit point.
+TRAZO_HD bool intersectBox(const BoxShape& box, const Ray& ray, float tMin, float tMax, ShapeHit& hit) {
+    // The object-space ray is not normalised, so its t is the world t (an affine map keeps ratios).
+    const Vec3 o = box.objectFromWorld.applyToPoint(ray.origin);
+    const Vec3 d = box.objectFromWorld.applyToVector(ray.direction);
+
+    float tEnter = -INFINITY, tExit = INFINITY;
+    int enterAxis = -1, exitAxis = -1;
+    float enterSign = 0.0f, exitSign = 0.0f;  // which face of the axis: −1 or +1
+    for (int axis = 0; axis < 3; ++axis) {
+        const float oi = o[axis], di = d[axis];
+        if (di == 0.0f) {  // true for −0 too: parallel to this slab, inside it or never
+            if (oi < -0.5f || oi > 0.5f) return false;
+            continue;
+        }
+        // Divisions rather than a reciprocal: 0/tiny stays 0 where 0·(1/tiny) = 0·inf would be NaN.
+        const float tLow = (-0.5f - oi) / di;
+        const float tHigh = (0.5f - oi) / di;
+        const bool forward = di > 0.0f;  // enters through the −face, leaves through the +face
+        const float tNear = forward ? tLow : tHigh;
+        const float tFar = forward ? tHigh : tLow;
+        if (tNear > tEnter) {
+            tEnter = tNear;
+            enterAxis = axis;
+            enterSign = forward ? -1.0f : 1.0f;
+        }
+        if (tFar < tExit) {
+            tExit = tFar;
+            exitAxis = axis;
+            exitSign = forward ? 1.0f : -1.0f;
+        }
+    }
+    if (!(tEnter <= tExit)) return false;
+
+    int axis;
+    float sign;
+    if (tEnter > tMin && tEnter < tMax) {
+        hit.t = tEnter;
+        axis = enterAxis;
+        sign = enterSign;
+    } else if (tExit > tMin && tExit < tMax) {
+        hit.t = tExit;
+        axis = exitAxis;
+        sign = exitSign;
+    } else {
+        return false;
+    }
+    // Normals map by the inverse transpose: objectFromWorldᵀ·(±e_axis) is ± row `axis` of the matrix.
+    hit.normal = normalize(box.objectFromWorld.row[axis] * sign);
+    return true;
+}
+
+TRAZO_HD SurfaceFrame boxFrame(const BoxShape& box, Vec3 p) {
+    const Vec3 q = box.objectFromWorld.applyToPoint(p);
+    const Vec3 aq = abs(q);
+    const int axis = aq.x >= aq.y && aq.x >= aq.z ? 0 : (aq.y >= aq.z ? 1 : 2);
+    const float sign = q[axis] >= 0.0f ? 1.0f : -1.0f;
+    Vec3 uAxis, vAxis;  // object-space directions of increasing u and v on this face
+    if (axis == 0) {
+        uAxis = Vec3(0.0f, 0.0f, -sign);
+        vAxis = Vec3(0.0f, 1.0f, 0.0f);
+    } else if (axis == 1) {
+        uAxis = Vec3(1.0f, 0.0f, 0.0f);
+        vAxis = Vec3(0.0f, 0.0f, -sign);
+    } else {
+        uAxis = Vec3(sign, 0.0f, 0.0f);
+        vAxis = Vec3(0.0f, 1.0f, 0.0f);
+    }
+    return {dot(q, uAxis) + 0.5f, dot(q, vAxis) + 0.5f, normalize(box.worldFromObject.applyToVector(uAxis)),
+            normalize(box.worldFromObject.applyToVector(vAxis))};
+}
+
+// The object kind's interface (objects/visit_object.h dispatches to it).
+TRAZO_HD bool intersectObject(const SceneView&, const BoxShape& box, const Ray& ray, float tMax, ClosestStack&,
+                              ShapeHit& hit) {
+    return intersectBox(box, ray, 0.0f, tMax, hit);
+}
+
+TRAZO_HD bool objectBlocks(const SceneView&, const BoxShape& box, const Ray& ray, float tMax, AnyStack&) {
+    ShapeHit hit;
+    return intersectBox(box, ray, 0.0f, tMax, hit);
+}
+
+TRAZO_HD SurfacePoint objectSurface(const SceneView&, const BoxShape& box, const ShapeHit& hit, Vec3 p, bool wantUv) {
+    return wantUv ? surfaceWithFrame(hit, boxFrame(box, p)) : plainSurface(hit);
+}
+
+TRAZO_HD bool objectHasUvs(const SceneView&, const BoxShape&) { return true; }
+
+inline Aabb objectBounds(const SceneView&, const BoxShape& box) {
+    Aabb b;
+    for (int c = 0; c < 8; ++c)
+        b.grow(box.worldFromObject.applyToPoint(
+            Vec3((c & 1) ? 0.5f : -0.5f, (c & 2) ? 0.5f : -0.5f, (c & 4) ? 0.5f : -0.5f)));
+    return b;
+}
+
+// Appends the box to out.boxes (templated on the arrays: see the sphere's appendObject).
+template <class Arrays>
+bool appendObject(const Box& box, Arrays& out, uint32_t& index) {
+    const Affine3 worldFromObject = composeTransforms(box.transforms);
+    index = (uint32_t)out.boxes.size();
+    out.boxes.push_back({inverse(worldFromObject), worldFromObject});
+    return true;
+}
+
+}  // namespace trazo

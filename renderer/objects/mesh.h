@@ -1,0 +1,120 @@
+// The triangle mesh object kind (host and device): world-space triangles in the order of the mesh's own BVH
+// (SceneView::triangles, MeshTriangle), shading data per corner beside them (kept apart so traversal touches
+// positions only), one MeshShape per Mesh block; its ray queries, surface, bounds and flattening.
+#pragma once
+
+#include <cstdint>
+
+#include "accel/bvh_traverse.h"
+#include "accel/collapse_bvh.h"
+#include "core/aabb.h"
+#include "core/vec3.h"
+#include "geometry/intersect_triangle_leaf.h"
+#include "geometry/surface_frame.h"
+#include "objects/scene_view.h"
+#include "scene/scene.h"
+
+namespace trazo {
+
+static_assert(kBvhMaxLeafSize <= kMaxLeafTriangles, "a mesh leaf must fit intersectTriangleLeaf");
+
+// One corner's shading data: unit normal, Lengyel tangent with the bitangent's handedness (bitangent =
+// tangentSign · normal × tangent), and texture coordinates.
+struct MeshCorner {
+    Vec3 normal;
+    Vec3 tangent;
+    float tangentSign;
+    float u, v;
+};
+
+struct TriangleCorners {
+    MeshCorner corner[3];
+};
+
+struct MeshShape {
+    uint32_t nodeOffset;      // root of the mesh's BVH in SceneView::meshNodes
+    uint32_t triangleOffset;  // first triangle in SceneView::triangles / triangleCorners
+    uint32_t triangleCount;
+    uint32_t hasUvs;          // 0: the OBJ had no uvs; textures are ignored on it
+};
+
+// Nearest triangle of the mesh in (tMin, tMax); the normal follows the triangle's winding (p0, p1, p2).
+// `stack`: the traversal stack the mesh continues on (the top level's, in intersectScene).
+TRAZO_HD bool intersectMesh(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMin, float tMax,
+                            ClosestStack& stack, ShapeHit& hit) {
+    const TriangleRay tr = makeTriangleRay(ray);
+    const MeshTriangle* triangles = scene.triangles.data + mesh.triangleOffset;
+    uint32_t best = 0;
+    TriangleHit bestHit{};
+    auto leaf = [&](uint32_t first, uint32_t count, float& tNearest) {
+        uint32_t which = 0;
+        if (!intersectTriangleLeaf(tr, triangles + first, count, tMin, tNearest, bestHit, which)) return false;
+        tNearest = bestHit.t;
+        best = first + which;
+        return true;
+    };
+    if (!traverseClosest(scene.meshNodes.data + mesh.nodeOffset, ray, tMin, tMax, stack, leaf)) return false;
+    const MeshTriangle& t = triangles[best];
+    hit.t = bestHit.t;
+    hit.normal = normalize(cross(t.p1 - t.p0, t.p2 - t.p0));
+    hit.triangle = mesh.triangleOffset + best;
+    hit.b1 = bestHit.b1;
+    hit.b2 = bestHit.b2;
+    return true;
+}
+
+TRAZO_HD bool meshBlocks(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMax, AnyStack& stack) {
+    const TriangleRay tr = makeTriangleRay(ray);
+    const MeshTriangle* triangles = scene.triangles.data + mesh.triangleOffset;
+    auto leaf = [&](uint32_t first, uint32_t count, float tLimit) {
+        return triangleLeafBlocks(tr, triangles + first, count, 0.0f, tLimit);
+    };
+    return traverseAny(scene.meshNodes.data + mesh.nodeOffset, ray, 0.0f, tMax, stack, leaf);
+}
+
+// Normal, uv and tangent interpolated from the corners. The geometric normal is turned to the side of the
+// shading normal, so the file's normals (not its winding) say which side is outside.
+TRAZO_HD SurfacePoint meshSurfaceAt(const SceneView& scene, const MeshShape& mesh, const ShapeHit& hit, bool wantUv) {
+    const MeshCorner* c = scene.triangleCorners[hit.triangle].corner;
+    const float b0 = 1.0f - hit.b1 - hit.b2;
+    SurfacePoint s = plainSurface(hit);
+    const Vec3 n = c[0].normal * b0 + c[1].normal * hit.b1 + c[2].normal * hit.b2;
+    if (dot(n, n) > 0.0f) s.n = normalize(n);
+    if (dot(s.n, s.ng) < 0.0f) s.ng = -s.ng;
+    if (wantUv && mesh.hasUvs) {
+        s.hasUv = true;
+        s.u = c[0].u * b0 + c[1].u * hit.b1 + c[2].u * hit.b2;
+        s.v = c[0].v * b0 + c[1].v * hit.b1 + c[2].v * hit.b2;
+        s.tangent = c[0].tangent * b0 + c[1].tangent * hit.b1 + c[2].tangent * hit.b2;
+        s.bitangent = cross(s.n, s.tangent) * c[0].tangentSign;
+    }
+    return s;
+}
+
+// The object kind's interface (objects/visit_object.h dispatches to it).
+TRAZO_HD bool intersectObject(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMax,
+                              ClosestStack& stack, ShapeHit& hit) {
+    return intersectMesh(scene, mesh, ray, 0.0f, tMax, stack, hit);
+}
+
+TRAZO_HD bool objectBlocks(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMax,
+                           AnyStack& stack) {
+    return meshBlocks(scene, mesh, ray, tMax, stack);
+}
+
+TRAZO_HD SurfacePoint objectSurface(const SceneView& scene, const MeshShape& mesh, const ShapeHit& hit, Vec3,
+                                    bool wantUv) {
+    return meshSurfaceAt(scene, mesh, hit, wantUv);
+}
+
+TRAZO_HD bool objectHasUvs(const SceneView&, const MeshShape& mesh) { return mesh.hasUvs != 0; }
+
+inline Aabb objectBounds(const SceneView& scene, const MeshShape& mesh) {
+    return wideNodeBounds(scene.meshNodes[mesh.nodeOffset]);
+}
+
+// Appends the mesh (its BVH nodes, triangles and corners, and its MeshShape to out.meshes); false for a Mesh
+// block with no triangles (device/flatten_mesh.cpp).
+bool appendObject(const Mesh& mesh, SceneArrays& out, uint32_t& index);
+
+}  // namespace trazo

@@ -1,0 +1,72 @@
+// SceneView: the flattened scene as kernels read it, non-owning views over arrays in host or device memory
+// (plain structs with 32-bit indices: no pointers, names or STL). Element types are only declared here, so
+// each object kind's header can take a SceneView while SceneView lists that kind's array.
+#pragma once
+
+#include <cstdint>
+
+#include "core/feature_mask.h"
+#include "core/hd.h"
+#include "core/vec3.h"
+#include "objects/object_kinds.h"
+
+namespace trazo {
+
+struct SphereShape;
+struct BoxShape;
+struct CylinderShape;
+struct CsgShape;
+struct CsgNodeData;
+struct MeshShape;
+struct MeshTriangle;
+struct TriangleCorners;
+struct WideBvhNode;
+struct MaterialData;
+struct PointLightData;
+struct AreaLightData;
+struct TextureData;
+struct SceneArrays;  // device/scene_arrays.h: the owning host copy
+
+// Every array of the flattened scene, once: the object kinds' shape arrays (objects/object_kinds.h), then
+// the rest. SceneArrays, SceneView, hostView() and the backends' uploads are all generated from this list,
+// so adding an array is a one-line change. X(element type, member name, ...).
+#define TRAZO_SCENE_ARRAYS(X)           \
+    TRAZO_OBJECT_KINDS(X)               \
+    X(CsgNodeData, csgNodes)            \
+    X(ObjectRef, objects)               \
+    X(MaterialData, materials)          \
+    X(PointLightData, pointLights)      \
+    X(AreaLightData, areaLights)        \
+    X(TextureData, textures)            \
+    X(Vec3, texels)                     \
+    X(WideBvhNode, meshNodes)           \
+    X(MeshTriangle, triangles)          \
+    X(TriangleCorners, triangleCorners) \
+    X(WideBvhNode, topNodes)
+
+// The render settings kernels need, as plain values (from SceneSettings).
+struct RenderSettings {
+    Vec3 background;
+    uint32_t reflectionQuality;
+    uint32_t reflectionSteps;
+    uint32_t indirectQuality;
+    float colorBleeding;
+    uint32_t antialiasing;  // 1, 4 or 16
+};
+
+template <typename T>
+struct ArrayView {
+    const T* data = nullptr;
+    uint32_t count = 0;
+    TRAZO_HD const T& operator[](uint32_t i) const { return data[i]; }
+};
+
+struct SceneView {
+#define TRAZO_X(T, name, ...) ArrayView<T> name;
+    TRAZO_SCENE_ARRAYS(TRAZO_X)
+#undef TRAZO_X
+    RenderSettings settings;
+    FeatureMask features;
+};
+
+}  // namespace trazo
