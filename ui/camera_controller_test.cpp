@@ -125,7 +125,7 @@ TEST(CameraControllerTest, SceneBoundsCoverShapesAndLights) {
     PointLight light;
     light.position = {0, 9, 0};
     scene.pointLights.push_back(light);
-    // The objects' bounds come padded by the top-level BVH (a ten-thousandth of the extent and more).
+    // The objects' bounds come padded (Aabb::padded) into the top-level BVH.
     const Aabb b = sceneBounds(flatten(scene).arrays);
     expectNear(b.min, Vec3(-5, -1, -5), 2e-3f);
     expectNear(b.max, Vec3(5, 9, 5), 2e-3f);

@@ -29,12 +29,12 @@ struct Aabb {
         const Vec3 e = extent();
         return 2.0f * (e.x * e.y + e.y * e.z + e.z * e.x);
     }
-    // Grown by a relative margin (a ten-thousandth of the extent, a millionth of the corners' magnitudes) so
+    // Grown by a relative margin (a hundred-thousandth of the extent, a millionth of the corners' magnitudes) so
     // that rounding in a slab test never culls a ray the shape's own exact test would hit. Empty boxes come
     // back as the canonical empty box, which every slab test misses.
     Aabb padded() const {
         if (empty()) return Aabb{};
-        const Vec3 pad = abs(max - min) * 1e-4f + abs(max) * 1e-6f + abs(min) * 1e-6f;
+        const Vec3 pad = abs(max - min) * 1e-5f + abs(max) * 1e-6f + abs(min) * 1e-6f;
         return Aabb{min - pad, max + pad};
     }
     bool contains(const Aabb& b) const {

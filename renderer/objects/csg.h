@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "accel/bvh_traverse.h"
+#include "accel/ray_box.h"
 #include "core/aabb.h"
 #include "core/affine.h"
 #include "core/ray.h"
@@ -148,23 +149,6 @@ TRAZO_HD int csgCombine(CsgOp op, const CsgInterval* left, int leftCount, const 
     return n;
 }
 
-TRAZO_HD bool slabHit(Vec3 boundsMin, Vec3 boundsMax, const Ray& ray, float tMax) {
-    float t0 = 0.0f, t1 = tMax;
-    for (int a = 0; a < 3; ++a) {
-        const float inv = 1.0f / ray.direction[a];
-        float tNear = (boundsMin[a] - ray.origin[a]) * inv, tFar = (boundsMax[a] - ray.origin[a]) * inv;
-        if (tNear > tFar) {
-            const float s = tNear;
-            tNear = tFar;
-            tFar = s;
-        }
-        // NaN (a zero direction component on a slab boundary) keeps the ray: the test must stay conservative.
-        t0 = tNear > t0 ? tNear : t0;
-        t1 = tFar < t1 ? tFar : t1;
-    }
-    return !(t0 > t1 * (1.0f + 1e-5f) + 1e-30f);
-}
-
 // Nearest surface of the solid with tMin < t < tMax and its outward normal (world space).
 TRAZO_HD_CALL bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, const Ray& ray, float tMin, float tMax,
                            ShapeHit& hit) {
@@ -172,6 +156,7 @@ TRAZO_HD_CALL bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, c
     // Bytes: every start, count and node index is below 2·kCsgMaxLeaves (less stack on a GPU thread).
     uint8_t listStart[kCsgMaxLeaves + 1], listCount[kCsgMaxLeaves + 1];
     int lists = 0, used = 0;
+    const BoxRay boxRay = makeBoxRay(ray);
     for (uint32_t k = 0; k < csg.nodeCount; ++k) {
         const CsgNodeData& node = nodes[csg.firstNode + k];
         if (node.op == CsgOp::Leaf) {
@@ -187,7 +172,8 @@ TRAZO_HD_CALL bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, c
             uint32_t skippedRoot = 0xffffffffu;
             for (int i = chainLength - 1; i >= 0; --i) {
                 const CsgNodeData& c = nodes[csg.firstNode + chain[i]];
-                if (!slabHit(c.boundsMin, c.boundsMax, ray, tMax)) {
+                float tEntry;
+                if (!intersectBounds(boxRay, c.boundsMin, c.boundsMax, 0.0f, tMax, tEntry)) {
                     skippedRoot = chain[i];
                     break;
                 }

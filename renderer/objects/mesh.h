@@ -63,7 +63,7 @@ TRAZO_HD bool intersectMesh(const SceneView& scene, const MeshShape& mesh, const
     return true;
 }
 
-TRAZO_HD bool meshBlocks(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMax, AnyStack& stack) {
+TRAZO_HD_HOST_CALL bool meshBlocks(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMax, AnyStack& stack) {
     const TriangleRay tr = makeTriangleRay(ray);
     const MeshTriangle* triangles = scene.triangles.data + mesh.triangleOffset;
     auto leaf = [&](uint32_t first, uint32_t count, float tLimit) {
