@@ -1,4 +1,5 @@
-// ImGui panels: widgets straight onto the scene's fields; each returns the DirtyFlags of what it changed.
+// ImGui panels: the scene's parameters edited through the block tables' rows (widgetFor picks each widget
+// and its limits); each panel returns the DirtyFlags of what it changed.
 #include "panels.h"
 
 #include <imgui.h>
@@ -6,13 +7,11 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "param_widget.h"
+#include "scene/block_table.h"
+
 namespace trazo {
 namespace {
-
-bool editVec3(const char* label, Vec3& v, float speed = 0.05f) { return ImGui::DragFloat3(label, &v.x, speed); }
-bool editColor(const char* label, Vec3& c) {
-    return ImGui::ColorEdit3(label, &c.x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-}
 
 // A combo over names with "(none)" first (index -1).
 bool comboIndex(const char* label, int32_t& index, const std::vector<std::string>& names, bool allowNone) {
@@ -36,46 +35,67 @@ bool comboIndex(const char* label, int32_t& index, const std::vector<std::string
     return changed;
 }
 
-bool editPositiveInt(const char* label, int& v, int lo, int hi) {
-    int value = v;
-    if (!ImGui::InputInt(label, &value)) return false;
-    value = std::clamp(value, lo, hi);
-    if (value == v) return false;
-    v = value;
+// The widget of one row (widgetFor) over its values; true when the edit changed them. `v` holds the edit.
+bool drawWidget(const ParamInfo& info, const ParamWidget& w, ParamValue& v) {
+    using Kind = ParamWidget::Kind;
+    const std::string label(info.name);
+    float f[4] = {v.real(0), v.real(1), v.real(2), v.real(3)};
+    int n[2] = {v.integer(0), v.integer(1)};
+    bool edited = false;
+    switch (w.kind) {
+        case Kind::None: return false;
+        case Kind::Color:
+            edited = ImGui::ColorEdit3(label.c_str(), f, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+            break;
+        case Kind::Vector: edited = ImGui::DragFloat3(label.c_str(), f, w.speed); break;
+        case Kind::Slider:
+            edited = ImGui::SliderFloat(label.c_str(), f, float(w.min), float(w.max), w.format);
+            break;
+        case Kind::Drag:
+            edited = ImGui::DragFloat(label.c_str(), f, w.speed, float(w.min), float(w.max), w.format);
+            break;
+        case Kind::Integer:
+            edited = info.count == 2 ? ImGui::InputInt2(label.c_str(), n) : ImGui::InputInt(label.c_str(), n);
+            if (w.commitOnExit) edited = ImGui::IsItemDeactivatedAfterEdit();
+            break;
+        case Kind::Choice: {
+            const int choices[] = {1, 4, 16};
+            int choice = n[0] == 16 ? 2 : n[0] == 4 ? 1 : 0;
+            edited = ImGui::Combo(label.c_str(), &choice, "1\0" "4\0" "16\0");
+            n[0] = choices[choice];
+            break;
+        }
+    }
+    if (!edited) return false;
+    for (int i = 0; i < info.count; ++i)
+        v.numbers[size_t(i)] = info.kind == ValueKind::Int ? double(n[i]) : double(f[i]);
     return true;
 }
 
-}  // namespace
-
-DirtyFlags drawSceneSettingsPanel(SceneSettings& s) {
+// A widget for every number row of `table` (names, paths and transforms have none), kept inside the reader's
+// checks (fitToCheck); each change applied through the row and flagged as `flag` (a render size as size).
+template <class Target>
+DirtyFlags editRows(std::span<const ParamSpec<Target>> table, Target& target, DirtyFlags flag) {
     DirtyFlags dirty = kDirtyNone;
-    if (editColor("BackgroundColor", s.backgroundColor)) dirty |= kDirtyScene;
-    // A new size reallocates the accumulation (and the display) when the field is left.
-    int size[2] = {s.renderWidth, s.renderHeight};
-    ImGui::InputInt2("Render size", size);
-    if (ImGui::IsItemDeactivatedAfterEdit()) {
-        s.renderWidth = std::clamp(size[0], 1, kMaxRenderSize);
-        s.renderHeight = std::clamp(size[1], 1, kMaxRenderSize);
-        dirty |= kDirtySize;
-    }
-    if (editPositiveInt("ReflectionQuality", s.reflectionQuality, 0, 64)) dirty |= kDirtyScene;
-    if (editPositiveInt("ReflectionSteps", s.reflectionSteps, 0, 64)) dirty |= kDirtyScene;
-    if (editPositiveInt("IndirectQuality", s.indirectQuality, 0, 64)) dirty |= kDirtyScene;
-    if (ImGui::DragFloat("ColorBleeding", &s.colorBleeding, 0.01f, 0.0f, 100.0f)) dirty |= kDirtyScene;
-    const int choices[] = {1, 4, 16};
-    int aa = s.antialiasing == 16 ? 2 : s.antialiasing == 4 ? 1 : 0;
-    if (ImGui::Combo("Antialiasing", &aa, "1\0" "4\0" "16\0")) {
-        s.antialiasing = choices[aa];
-        dirty |= kDirtyScene;
+    for (const ParamSpec<Target>& row : table) {
+        const ParamWidget w = widgetFor(row.info);
+        std::vector<ParamValue> values;
+        row.extract(target, values);
+        if (w.kind == ParamWidget::Kind::None || values.size() != 1) continue;
+        ParamValue v = values[0];
+        if (!drawWidget(row.info, w, v) || !fitToCheck(row.info, v) || v.numbers == values[0].numbers) continue;
+        row.apply(target, v);
+        dirty |= w.commitOnExit ? kDirtySize : flag;
     }
     return dirty;
 }
 
+}  // namespace
+
+DirtyFlags drawSceneSettingsPanel(SceneSettings& s) { return editRows(sceneSettingsTable(), s, kDirtyScene); }
+
 DirtyFlags drawCameraPanel(Camera& camera, PanelActions& actions) {
-    DirtyFlags dirty = kDirtyNone;
-    if (editVec3("POV", camera.pov)) dirty |= kDirtyCamera;
-    if (editVec3("POI", camera.poi)) dirty |= kDirtyCamera;
-    if (ImGui::SliderFloat("FOV", &camera.fovDegrees, 1.0f, 170.0f, "%.1f°")) dirty |= kDirtyCamera;
+    const DirtyFlags dirty = editRows(cameraTable(), camera, kDirtyCamera);
     if (ImGui::Button("Frame scene (F)")) actions.frameScene = true;
     ImGui::SameLine();
     if (ImGui::Button("File camera (R)")) actions.resetCamera = true;
@@ -95,20 +115,12 @@ DirtyFlags drawMaterialsPanel(Scene& scene, PanelState& state) {
     int32_t selected = state.material;
     if (comboIndex("Material", selected, names, false)) state.material = selected;
     Material& m = scene.materials[size_t(state.material)];
-    DirtyFlags dirty = kDirtyNone;
-    if (editColor("DiffuseColor", m.diffuseColor)) dirty |= kDirtyScene;
-    if (editColor("SpecularColor", m.specularColor)) dirty |= kDirtyScene;
-    if (editColor("EmissiveColor", m.emissiveColor)) dirty |= kDirtyScene;
-    if (ImGui::SliderFloat("Roughness", &m.roughness, 0.0f, 1.0f)) dirty |= kDirtyScene;
-    if (ImGui::SliderFloat("Opacity", &m.opacity, 0.0f, 1.0f)) dirty |= kDirtyScene;
-    if (ImGui::DragFloat("RefractionIndex", &m.refractionIndex, 0.005f, 0.1f, 4.0f)) dirty |= kDirtyScene;
-    if (ImGui::SliderFloat("ReflectionAngle", &m.reflectionAngleDegrees, 0.0f, 180.0f, "%.1f°")) dirty |= kDirtyScene;
-    if (ImGui::SliderFloat("ReflectionAmount", &m.reflectionAmount, 0.0f, 1.0f)) dirty |= kDirtyScene;
-    if (comboIndex("DiffuseTexture", m.diffuseTexture, textures, true)) dirty |= kDirtyScene;
-    if (comboIndex("SpecularTexture", m.specularTexture, textures, true)) dirty |= kDirtyScene;
-    if (comboIndex("EmissiveTexture", m.emissiveTexture, textures, true)) dirty |= kDirtyScene;
-    if (comboIndex("NormalTexture", m.normalTexture, textures, true)) dirty |= kDirtyScene;
-    m.refractionIndex = std::max(m.refractionIndex, 1e-3f);  // the reader's check: positive
+    MaterialDraft draft{m, {}, {}};  // the reader's rows act on its draft
+    DirtyFlags dirty = editRows(materialTable(), draft, kDirtyScene);
+    if (dirty) m = draft.material;
+    for (const TextureSlot& slot : textureSlots()) {
+        if (comboIndex(std::string(slot.name).c_str(), m.*slot.index, textures, true)) dirty |= kDirtyScene;
+    }
     return dirty;
 }
 
@@ -117,36 +129,16 @@ DirtyFlags drawLightsPanel(Scene& scene, PanelState& state) {
     if (!scene.pointLights.empty()) {
         ImGui::SliderInt("Point light", &state.pointLight, 0, int(scene.pointLights.size()) - 1);
         state.pointLight = std::clamp(state.pointLight, 0, int(scene.pointLights.size()) - 1);
-        PointLight& l = scene.pointLights[size_t(state.pointLight)];
         ImGui::PushID("point");
-        if (editVec3("Position", l.position)) dirty |= kDirtyScene;
-        if (editColor("Color", l.color)) dirty |= kDirtyScene;
+        dirty |= editRows(pointLightTable(), scene.pointLights[size_t(state.pointLight)], kDirtyScene);
         ImGui::PopID();
     }
     if (!scene.areaLights.empty()) {
         if (!scene.pointLights.empty()) ImGui::Separator();
         ImGui::SliderInt("Area light", &state.areaLight, 0, int(scene.areaLights.size()) - 1);
         state.areaLight = std::clamp(state.areaLight, 0, int(scene.areaLights.size()) - 1);
-        AreaLight& l = scene.areaLights[size_t(state.areaLight)];
         ImGui::PushID("area");
-        if (editVec3("Position", l.position)) dirty |= kDirtyScene;
-        if (editColor("Color", l.color)) dirty |= kDirtyScene;
-        Vec3 direction = l.direction;
-        if (editVec3("Direction", direction, 0.01f) && lengthSquared(direction) > 0.0f) {
-            l.direction = direction;
-            dirty |= kDirtyScene;
-        }
-        if (ImGui::SliderAngle("RollAngle", &l.rollAngle, -180.0f, 180.0f)) dirty |= kDirtyScene;
-        if (ImGui::DragFloat("Width", &l.width, 0.01f, 1e-3f, 1e4f)) dirty |= kDirtyScene;
-        if (ImGui::DragFloat("Height", &l.height, 0.01f, 1e-3f, 1e4f)) dirty |= kDirtyScene;
-        int sub[2] = {l.subdivisionX, l.subdivisionY};
-        if (ImGui::InputInt2("Subdivision", sub)) {
-            l.subdivisionX = std::clamp(sub[0], 1, 256);
-            l.subdivisionY = std::clamp(sub[1], 1, 256);
-            dirty |= kDirtyScene;
-        }
-        l.width = std::max(l.width, 1e-3f);
-        l.height = std::max(l.height, 1e-3f);
+        dirty |= editRows(areaLightTable(), scene.areaLights[size_t(state.areaLight)], kDirtyScene);
         ImGui::PopID();
     }
     if (scene.pointLights.empty() && scene.areaLights.empty()) ImGui::TextDisabled("The scene has no lights.");

@@ -93,7 +93,8 @@ bool checkRenderBounds(const Scene& scene, Diagnostics& diags) {
         if (strata <= kMaxGridStrata) return;
         diags.error(firstGiven({&at, &s.where}, scene.path),
                     std::string(name) + " " + std::to_string(q) + " asks for 2·q² = " + std::to_string(strata) +
-                        " strata; at most " + bound + " (q ≤ 724) are allowed");
+                        " strata; at most " + bound + " (q ≤ " + std::to_string(kMaxStrataQuality) +
+                        ") are allowed");
         ok = false;
     };
     quality("ReflectionQuality", s.reflectionQuality, s.reflectionQualityAt);
@@ -109,7 +110,8 @@ bool checkRenderBounds(const Scene& scene, Diagnostics& diags) {
         if (cells <= kMaxGridStrata) continue;
         diags.error(firstGiven({&l.subdivisionAt, &l.where}, scene.path),
                     "Subdivision " + std::to_string(l.subdivisionX) + " " + std::to_string(l.subdivisionY) + " asks for " +
-                        std::to_string(cells) + " cells; an area light has at most " + bound + " (e.g. 1024 1024)");
+                        std::to_string(cells) + " cells; an area light has at most " + bound + " (e.g. " +
+                        std::to_string(kMaxGridSide) + " " + std::to_string(kMaxGridSide) + ")");
         ok = false;
     }
     return ok;

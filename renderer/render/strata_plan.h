@@ -14,16 +14,8 @@ namespace trazo {
 
 constexpr uint32_t kMaxCyclePasses = 1u << 16;
 
-// The bounds of the settings that size a render's work (checkRenderBounds). A stratified grid (an area
-// light's Subdivision nx·ny cells, the 2·q² strata of ReflectionQuality or IndirectQuality) holds at most
-// kMaxGridStrata strata: its counts, products and stratum indices then stay far inside the kernels' 32-bit
-// arithmetic (2^32 wraps to 0 and divided by zero) and exact in float (cell index + jitter), and one full
-// cycle of such a grid is already 2^20 samples a pixel. q ≤ 724 for the qualities, e.g. 1024 × 1024 cells.
-constexpr uint64_t kMaxGridStrata = 1u << 20;
-// ReflectionSteps bounds the mirror chain below each camera ray, so a pass's cost grows with it. Beyond 2^16
-// bounces a mirror of any reflectance below 1 − 10⁻³ has attenuated the ray by e^−65 (and the PendingRay
-// bit field holds 2^27 − 1).
-constexpr uint64_t kMaxReflectionSteps = 1u << 16;
+// kMaxGridStrata, kMaxStrataQuality and kMaxReflectionSteps, the bounds checkRenderBounds applies, are in
+// scene/scene.h beside the scene language's other limits.
 
 // Reports (file:line of the parameter, else of its block or the scene) every setting above its bound; false
 // when any is. Read-time bounds for the scene language: the render refuses, status 2, before any work.

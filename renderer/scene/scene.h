@@ -16,6 +16,22 @@ namespace trazo {
 // The most pixels an image may have on a side (RenderWidth, RenderHeight, --width, --height, the viewer).
 constexpr int kMaxRenderSize = 16384;
 
+// The bounds of the settings that size a render's work (checkRenderBounds, render/strata_plan.h). A stratified
+// grid (an area light's Subdivision nx·ny cells, the 2·q² strata of ReflectionQuality or IndirectQuality) holds
+// at most kMaxGridStrata strata: its counts, products and stratum indices then stay far inside the kernels'
+// 32-bit arithmetic (2^32 wraps to 0 and divided by zero) and exact in float (cell index + jitter), and one
+// full cycle of such a grid is already 2^20 samples a pixel.
+constexpr uint64_t kMaxGridStrata = 1u << 20;
+constexpr int kMaxStrataQuality = 724;  // the largest q with 2·q² ≤ kMaxGridStrata
+constexpr int kMaxGridSide = 1024;      // the largest square grid: 1024 × 1024 = kMaxGridStrata
+static_assert(2ull * kMaxStrataQuality * kMaxStrataQuality <= kMaxGridStrata &&
+              2ull * (kMaxStrataQuality + 1) * (kMaxStrataQuality + 1) > kMaxGridStrata);
+static_assert(uint64_t(kMaxGridSide) * kMaxGridSide == kMaxGridStrata);
+// ReflectionSteps bounds the mirror chain below each camera ray, so a pass's cost grows with it. Beyond 2^16
+// bounces a mirror of any reflectance below 1 − 10⁻³ has attenuated the ray by e^−65 (and the PendingRay
+// bit field holds 2^27 − 1).
+constexpr uint64_t kMaxReflectionSteps = 1u << 16;
+
 struct SceneSettings {
     Vec3 backgroundColor{0, 0, 0};
     int renderWidth = 512;

@@ -143,11 +143,9 @@ private:
         Material& m = d.material;
         if (m.name.empty()) return;  // reported as missing
         if (!checkUnique("material", m.name, d.nameAt, declaredMaterials_, index)) return;
-        int32_t* slots[kTextureSlotCount] = {&m.diffuseTexture, &m.specularTexture, &m.emissiveTexture,
-                                             &m.normalTexture};
-        for (int s = 0; s < kTextureSlotCount; ++s) {
+        for (size_t s = 0; s < textureSlots().size(); ++s) {
             if (!d.textures[s].name.empty()) {
-                *slots[s] = resolve(d.textures[s], "texture", textures_, declaredTextures_, index);
+                m.*textureSlots()[s].index = resolve(d.textures[s], "texture", textures_, declaredTextures_, index);
             }
         }
         m.where = block.where;

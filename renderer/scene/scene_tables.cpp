@@ -1,0 +1,363 @@
+// Block tables (host): the parameters of every block as SPEC.md §3–§4 lists them. Defaults are not written
+// here: withDefaults reads them from scene.h's initialisers.
+#include "scene/block_table.h"
+
+namespace trazo {
+namespace {
+
+using Check = ValueCheck;
+using Step = TransformStep::Kind;
+
+template <class Row>
+std::vector<Row> concat(std::initializer_list<std::vector<Row>> parts) {
+    std::vector<Row> all;
+    for (const std::vector<Row>& part : parts) all.insert(all.end(), part.begin(), part.end());
+    return all;
+}
+
+// One transform row: every line appends a step of `kind` to `Holder::transforms`, in written order.
+template <class Holder>
+ParamSpec<Holder> transformRow(ParamInfo info, Step kind) {
+    info.kind = ValueKind::Real;
+    info.accumulates = true;
+    return {info,
+            [kind](Holder& h, const ParamValue& v) {
+                h.transforms.push_back({kind, v.vec3(), kind == Step::Rotation ? v.real(3) : 0.0f});
+            },
+            [kind](const Holder& h, std::vector<ParamValue>& out) {
+                for (size_t i = 0; i < h.transforms.size(); ++i) {
+                    const TransformStep& t = h.transforms[i];
+                    if (t.kind != kind) continue;
+                    ParamValue v;
+                    v.numbers = {t.value.x, t.value.y, t.value.z, t.angle};
+                    v.step = i;
+                    out.push_back(v);
+                }
+            }};
+}
+
+// Box, CSG and Mesh objects and every CSG-file node (any struct with `transforms`).
+template <class Holder>
+std::vector<ParamSpec<Holder>> transformRows() {
+    return {
+        transformRow<Holder>({.name = "Translation", .count = 3, .doc = "translate by x y z (in written order)"},
+                             Step::Translation),
+        transformRow<Holder>({.name = "Rotation",
+                              .count = 4,
+                              .doc = "rotate about axis x y z by an angle in radians",
+                              .check = Check::RotationAxis},
+                             Step::Rotation),
+        transformRow<Holder>(
+            {.name = "Scale", .count = 3, .doc = "scale by sx sy sz about the origin", .check = Check::NonZeroComponents},
+            Step::Scale),
+    };
+}
+
+// Scene Sphere objects and CSG Sphere nodes (Sphere or CsgNode).
+template <class Shape>
+std::vector<ParamSpec<Shape>> sphereRows() {
+    return {
+        field("Center", &Shape::center, "centre"),
+        field("Radius", &Shape::radius, "radius", Check::Positive),
+    };
+}
+
+// Scene Cylinder objects and CSG Cylinder nodes (Cylinder or CsgNode).
+template <class Shape>
+std::vector<ParamSpec<Shape>> cylinderRows() {
+    return {
+        field("Base", &Shape::base, "centre of the bottom cap"),
+        field("Axis", &Shape::axis, "direction from the bottom cap to the top", Check::NonZeroVector),
+        field("Height", &Shape::height, "length along the axis", Check::Positive),
+        field("Radius", &Shape::radius, "radius", Check::Positive),
+    };
+}
+
+// A Name or Path row over the string `text(target)` and the location its line is remembered at.
+template <class Target, class Text>
+ParamSpec<Target> textRow(ParamInfo info, Text text, SourceLocation Target::*at) {
+    return {info,
+            [text, at](Target& t, const ParamValue& v) {
+                text(t) = v.text;
+                t.*at = v.at;
+            },
+            [text, at](const Target& t, std::vector<ParamValue>& out) {
+                if (text(t).empty()) return;
+                ParamValue v;
+                v.text = text(t);
+                v.at = t.*at;
+                out.push_back(v);
+            }};
+}
+
+// A name another block declares (a material, a texture, a CSG child type), kept as written for the reader.
+template <class Target, class Ref>
+ParamSpec<Target> nameRefRow(ParamInfo info, Ref ref) {
+    info.kind = ValueKind::Name;
+    return {info, [ref](Target& t, const ParamValue& v) { ref(t) = {v.text, v.at}; },
+            [ref](const Target& t, std::vector<ParamValue>& out) {
+                if (ref(t).name.empty()) return;
+                ParamValue v;
+                v.text = ref(t).name;
+                v.at = ref(t).at;
+                out.push_back(v);
+            }};
+}
+
+template <class Object>
+ParamSpec<ObjectDraft<Object>> materialRow() {
+    return nameRefRow<ObjectDraft<Object>>({.name = "Material", .doc = "material name (the Material defaults, with a warning)"},
+                                      [](auto& d) -> auto& { return d.material; });
+}
+
+template <class Object>
+ParamSpec<ObjectDraft<Object>> sourceRow(std::string_view doc) {
+    return textRow<ObjectDraft<Object>>({.name = "Source", .kind = ValueKind::Path, .required = true, .doc = doc},
+                                   [](auto& d) -> auto& { return d.object.source; },
+                                   &ObjectDraft<Object>::sourceAt);
+}
+
+template <class Target>
+BlockInfo infoOf(std::string_view name, std::span<const ParamSpec<Target>> table) {
+    BlockInfo b{name, {}};
+    for (const ParamSpec<Target>& spec : table) b.params.push_back(spec.info);
+    return b;
+}
+
+}  // namespace
+
+const std::array<TextureSlot, kTextureSlotCount>& textureSlots() {
+    static const std::array<TextureSlot, kTextureSlotCount> slots = {{
+        {"DiffuseTexture", "texture multiplying DiffuseColor", &Material::diffuseTexture},
+        {"SpecularTexture", "texture multiplying SpecularColor", &Material::specularTexture},
+        {"EmissiveTexture", "texture multiplying EmissiveColor", &Material::emissiveTexture},
+        {"NormalTexture", "tangent-space normal map (meshes only)", &Material::normalTexture},
+    }};
+    return slots;
+}
+
+MaterialDraft materialDraft(const Material& material, const std::vector<Texture>& textures) {
+    MaterialDraft d{material, {}, {}};
+    for (int s = 0; s < kTextureSlotCount; ++s) {
+        const int32_t index = material.*textureSlots()[size_t(s)].index;
+        if (index >= 0 && size_t(index) < textures.size()) d.textures[size_t(s)].name = textures[size_t(index)].name;
+    }
+    return d;
+}
+
+std::span<const ParamSpec<SceneSettings>> sceneSettingsTable() {
+    static const std::vector<ParamSpec<SceneSettings>> rows = withDefaults<SceneSettings>({
+        colour("BackgroundColor", &SceneSettings::backgroundColor, "colour of rays that hit nothing"),
+        field("RenderWidth", &SceneSettings::renderWidth, "image width in pixels", Check::RenderSize),
+        field("RenderHeight", &SceneSettings::renderHeight, "image height in pixels", Check::RenderSize),
+        field("ReflectionQuality", &SceneSettings::reflectionQuality, "q: 2·q² glossy reflection rays", Check::StrataQuality,
+              ValueUnit::None, &SceneSettings::reflectionQualityAt),
+        field("ReflectionSteps", &SceneSettings::reflectionSteps, "maximum reflection depth", Check::ReflectionDepth,
+              ValueUnit::None, &SceneSettings::reflectionStepsAt),
+        field("IndirectQuality", &SceneSettings::indirectQuality, "q: 2·q² hemisphere rays for indirect light",
+              Check::StrataQuality, ValueUnit::None, &SceneSettings::indirectQualityAt),
+        field("ColorBleeding", &SceneSettings::colorBleeding, "factor on the indirect light"),
+        field("Antialiasing", &SceneSettings::antialiasing, "samples per pixel: 1, 4 or 16", Check::Antialiasing),
+    });
+    return rows;
+}
+
+std::span<const ParamSpec<Camera>> cameraTable() {
+    static const std::vector<ParamSpec<Camera>> rows = withDefaults<Camera>({
+        field("POV", &Camera::pov, "camera position"),
+        field("POI", &Camera::poi, "point looked at"),
+        field("FOV", &Camera::fovDegrees, "vertical field of view in degrees", Check::FieldOfView, ValueUnit::Degrees),
+    });
+    return rows;
+}
+
+std::span<const ParamSpec<TextureDraft>> textureTable() {
+    static const std::vector<ParamSpec<TextureDraft>> rows = withDefaults<TextureDraft>({
+        textRow<TextureDraft>({.name = "Name", .kind = ValueKind::Name, .required = true, .doc = "name materials use to refer to it"},
+                   [](auto& t) -> auto& { return t.texture.name; }, &TextureDraft::nameAt),
+        textRow<TextureDraft>({.name = "Source", .kind = ValueKind::Path, .required = true, .doc = "image file, any format FreeImage reads"},
+                   [](auto& t) -> auto& { return t.texture.source; }, &TextureDraft::sourceAt),
+    });
+    return rows;
+}
+
+namespace {
+
+// The Material's texture parameters, one row per textureSlots() entry.
+std::vector<ParamSpec<MaterialDraft>> textureSlotRows() {
+    std::vector<ParamSpec<MaterialDraft>> rows;
+    for (size_t s = 0; s < textureSlots().size(); ++s) {
+        rows.push_back(nameRefRow<MaterialDraft>({.name = textureSlots()[s].name, .doc = textureSlots()[s].doc},
+                                                 [s](auto& d) -> auto& { return d.textures[s]; }));
+    }
+    return rows;
+}
+
+}  // namespace
+
+std::span<const ParamSpec<MaterialDraft>> materialTable() {
+    static const std::vector<ParamSpec<MaterialDraft>> rows = withDefaults(concat<ParamSpec<MaterialDraft>>({
+        {textRow<MaterialDraft>({.name = "Name", .kind = ValueKind::Name, .required = true, .doc = "name objects use to refer to it"},
+                    [](auto& m) -> auto& { return m.material.name; }, &MaterialDraft::nameAt)},
+        lift<MaterialDraft, Material>(&MaterialDraft::material, {
+            colour("DiffuseColor", &Material::diffuseColor, "diffuse colour (Oren–Nayar)"),
+            colour("SpecularColor", &Material::specularColor, "specular colour (Cook–Torrance); also tints reflections"),
+            colour("EmissiveColor", &Material::emissiveColor, "colour emitted without lighting"),
+        }),
+        textureSlotRows(),
+        lift<MaterialDraft, Material>(&MaterialDraft::material, {
+            field("Roughness", &Material::roughness, "0 polished … 1 rough", Check::NonNegative),
+            field("Opacity", &Material::opacity, "1 opaque … 0 fully transparent", Check::UnitInterval),
+            field("RefractionIndex", &Material::refractionIndex, "index of refraction", Check::Positive),
+            field("ReflectionAngle", &Material::reflectionAngleDegrees,
+                  "full cone angle of glossy reflections in degrees; 0 = mirror", Check::ConeAngle, ValueUnit::Degrees),
+            field("ReflectionAmount", &Material::reflectionAmount, "blend between lit colour (0) and reflection (1)",
+                  Check::UnitInterval),
+        }),
+    }));
+    return rows;
+}
+
+std::span<const ParamSpec<ObjectDraft<Sphere>>> sphereTable() {
+    using Draft = ObjectDraft<Sphere>;
+    static const std::vector<ParamSpec<Draft>> rows =
+        withDefaults(concat<ParamSpec<Draft>>({{materialRow<Sphere>()}, lift(&Draft::object, sphereRows<Sphere>())}));
+    return rows;
+}
+
+std::span<const ParamSpec<ObjectDraft<Box>>> boxTable() {
+    using Draft = ObjectDraft<Box>;
+    static const std::vector<ParamSpec<Draft>> rows =
+        withDefaults(concat<ParamSpec<Draft>>({{materialRow<Box>()}, lift(&Draft::object, transformRows<Box>())}));
+    return rows;
+}
+
+std::span<const ParamSpec<ObjectDraft<Cylinder>>> cylinderTable() {
+    using Draft = ObjectDraft<Cylinder>;
+    static const std::vector<ParamSpec<Draft>> rows =
+        withDefaults(concat<ParamSpec<Draft>>({{materialRow<Cylinder>()}, lift(&Draft::object, cylinderRows<Cylinder>())}));
+    return rows;
+}
+
+std::span<const ParamSpec<ObjectDraft<Csg>>> csgTable() {
+    using Draft = ObjectDraft<Csg>;
+    static const std::vector<ParamSpec<Draft>> rows = withDefaults(concat<ParamSpec<Draft>>(
+        {{materialRow<Csg>(), sourceRow<Csg>(".csg file with the tree")}, lift(&Draft::object, transformRows<Csg>())}));
+    return rows;
+}
+
+std::span<const ParamSpec<ObjectDraft<Mesh>>> meshTable() {
+    using Draft = ObjectDraft<Mesh>;
+    static const std::vector<ParamSpec<Draft>> rows = withDefaults(
+        concat<ParamSpec<Draft>>({{materialRow<Mesh>(), sourceRow<Mesh>(".obj file")}, lift(&Draft::object, transformRows<Mesh>())}));
+    return rows;
+}
+
+std::span<const ParamSpec<PointLight>> pointLightTable() {
+    static const std::vector<ParamSpec<PointLight>> rows = withDefaults<PointLight>({
+        field("Position", &PointLight::position, "position"),
+        colour("Color", &PointLight::color, "colour and intensity (no falloff)"),
+    });
+    return rows;
+}
+
+std::span<const ParamSpec<AreaLight>> areaLightTable() {
+    static const std::vector<ParamSpec<AreaLight>> rows = withDefaults<AreaLight>({
+        colour("Color", &AreaLight::color, "colour and intensity (no falloff)"),
+        field("Position", &AreaLight::position, "centre of the rectangle"),
+        field("Direction", &AreaLight::direction, "normal of the rectangle", Check::NonZeroVector),
+        field("RollAngle", &AreaLight::rollAngle, "turn of the rectangle about its normal, radians", Check::None,
+              ValueUnit::Radians),
+        field("Width", &AreaLight::width, "size along u", Check::Positive),
+        field("Height", &AreaLight::height, "size along v", Check::Positive),
+        {{.name = "Subdivision",
+          .kind = ValueKind::Int,
+          .count = 2,
+          .doc = "strata across the width and the height",
+          .check = Check::GridCells},
+         [](AreaLight& l, const ParamValue& v) {
+             l.subdivisionX = v.integer(0);
+             l.subdivisionY = v.integer(1);
+             l.subdivisionAt = v.at;
+         },
+         [](const AreaLight& l, std::vector<ParamValue>& out) {
+             ParamValue v;
+             v.numbers = {double(l.subdivisionX), double(l.subdivisionY), 0, 0};
+             v.at = l.subdivisionAt;
+             out.push_back(v);
+         }},
+    });
+    return rows;
+}
+
+std::span<const ParamSpec<CsgNodeDraft>> csgSphereTable() {
+    static const std::vector<ParamSpec<CsgNodeDraft>> rows = withDefaults(
+        concat<ParamSpec<CsgNodeDraft>>({lift(&CsgNodeDraft::node, sphereRows<CsgNode>()), lift(&CsgNodeDraft::node, transformRows<CsgNode>())}));
+    return rows;
+}
+
+std::span<const ParamSpec<CsgNodeDraft>> csgBoxTable() {
+    static const std::vector<ParamSpec<CsgNodeDraft>> rows = withDefaults(lift(&CsgNodeDraft::node, transformRows<CsgNode>()));
+    return rows;
+}
+
+std::span<const ParamSpec<CsgNodeDraft>> csgCylinderTable() {
+    static const std::vector<ParamSpec<CsgNodeDraft>> rows = withDefaults(
+        concat<ParamSpec<CsgNodeDraft>>({lift(&CsgNodeDraft::node, cylinderRows<CsgNode>()), lift(&CsgNodeDraft::node, transformRows<CsgNode>())}));
+    return rows;
+}
+
+namespace {
+
+// LeftType, LeftIndex, RightType, RightIndex: all required.
+std::vector<ParamSpec<CsgNodeDraft>> csgChildRows() {
+    auto index = [](std::string_view name, std::string_view doc, int CsgNodeDraft::*member, SourceLocation CsgNodeDraft::*at) {
+        return field(name, member, doc, Check::NonNegative, ValueUnit::None, at);
+    };
+    std::vector<ParamSpec<CsgNodeDraft>> rows = {
+        nameRefRow<CsgNodeDraft>({.name = "LeftType", .doc = "Sphere, Box, Cylinder, Operation, Union, Difference or Intersection"},
+                      [](auto& n) -> auto& { return n.leftType; }),
+        index("LeftIndex", "index among the blocks of LeftType, from 0", &CsgNodeDraft::leftIndex, &CsgNodeDraft::leftIndexAt),
+        nameRefRow<CsgNodeDraft>({.name = "RightType", .doc = "as LeftType"}, [](auto& n) -> auto& { return n.rightType; }),
+        index("RightIndex", "as LeftIndex", &CsgNodeDraft::rightIndex, &CsgNodeDraft::rightIndexAt),
+    };
+    for (ParamSpec<CsgNodeDraft>& row : rows) row.info.required = true;
+    return rows;
+}
+
+}  // namespace
+
+std::span<const ParamSpec<CsgNodeDraft>> csgOperationTable() {
+    static const std::vector<ParamSpec<CsgNodeDraft>> rows =
+        withDefaults(concat<ParamSpec<CsgNodeDraft>>({csgChildRows(), lift(&CsgNodeDraft::node, transformRows<CsgNode>())}));
+    return rows;
+}
+
+const std::vector<BlockInfo>& sceneBlocks() {
+    static const std::vector<BlockInfo> blocks = {
+        infoOf("SceneSettings", sceneSettingsTable()), infoOf("Camera", cameraTable()),
+        infoOf("Texture", textureTable()),             infoOf("Material", materialTable()),
+        infoOf("Sphere", sphereTable()),               infoOf("Box", boxTable()),
+        infoOf("Cylinder", cylinderTable()),           infoOf("CSG", csgTable()),
+        infoOf("Mesh", meshTable()),                   infoOf("PointLight", pointLightTable()),
+        infoOf("AreaLight", areaLightTable()),
+    };
+    return blocks;
+}
+
+const std::vector<BlockInfo>& csgBlocks() {
+    static const std::vector<BlockInfo> blocks = {
+        infoOf("Sphere", csgSphereTable()),       infoOf("Box", csgBoxTable()),
+        infoOf("Cylinder", csgCylinderTable()),   infoOf("Union", csgOperationTable()),
+        infoOf("Difference", csgOperationTable()), infoOf("Intersection", csgOperationTable()),
+    };
+    return blocks;
+}
+
+std::vector<std::string_view> blockNames(const std::vector<BlockInfo>& blocks) {
+    std::vector<std::string_view> names;
+    for (const BlockInfo& b : blocks) names.push_back(b.name);
+    return names;
+}
+
+}  // namespace trazo
