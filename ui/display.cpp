@@ -123,7 +123,7 @@ bool Display::fillFromHost(Backend& backend) {
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
         return false;
     }
-    for (size_t i = 0; i < pixels; ++i) {  // as resolveImage() does
+    for (size_t i = 0; i < pixels; ++i) {
         const Vec3 c = accum_[i].estimate();
         rgba[4 * i + 0] = c.x;
         rgba[4 * i + 1] = c.y;
