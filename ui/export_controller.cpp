@@ -60,7 +60,8 @@ void ExportController::saveScreenshot(ViewerSession& session, PanelState& state)
     const std::string path = state.screenshotPath;
     saveSessionImage(session, path, state.status);
     report(state.status);
-    if (!defaultName_.empty() && path == defaultName_) showDefault(std::filesystem::path(path).extension().string(), state);
+    if (!defaultName_.empty() && path == defaultName_)
+        showDefault(std::filesystem::path(path).extension().string(), state);
 }
 
 void ExportController::saveScene(const Scene& scene, PanelState& state) {

@@ -16,12 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path freshDir(const std::string& name) {
-    const fs::path dir = test::tempPath(name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path freshDir(const std::string& name) { return test::freshDir(name); }
 
 // The current folder for one test (the viewer names its defaults relative to it).
 class InFolder {

@@ -59,8 +59,8 @@ void initialWindowSize(uint32_t width, uint32_t height, int& w, int& h) {
 class ViewerApp {
 public:
     ViewerApp(const ViewerOptions& options, Window& window, ViewerSession& session, Clock::time_point start)
-        : options_(options), window_(window), session_(session), exports_(options.scenePath, options.screenshot, state_),
-          stats_(start) {
+        : options_(options), window_(window), session_(session),
+          exports_(options.scenePath, options.screenshot, state_), stats_(start) {
         std::string device;
         cudaBuilt_ = cudaDeviceAvailable(device) || session.backend().name() == "cuda";
         state_.backend = runningBackend();
@@ -210,8 +210,12 @@ private:
     DirtyFlags execute(ViewerCommand command) {
         Camera& camera = session_.scene().camera;
         switch (command) {
-            case ViewerCommand::FrameScene: controller_.frame(camera, sceneBounds(session_.scene())); return kDirtyCamera;
-            case ViewerCommand::ResetCamera: controller_.reset(camera, session_.fileScene().camera); return kDirtyCamera;
+            case ViewerCommand::FrameScene:
+                controller_.frame(camera, sceneBounds(session_.scene()));
+                return kDirtyCamera;
+            case ViewerCommand::ResetCamera:
+                controller_.reset(camera, session_.fileScene().camera);
+                return kDirtyCamera;
             case ViewerCommand::Screenshot: screenshotPending_ = true; break;
             case ViewerCommand::SaveScene: exports_.saveScene(session_.scene(), state_); break;
             case ViewerCommand::Quit: window_.requestClose(); break;

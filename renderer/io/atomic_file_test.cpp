@@ -4,10 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <thread>
 #include <vector>
 
@@ -19,26 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path freshDir(const std::string& name) {
-    const fs::path dir = test::tempPath(name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
-std::vector<std::string> listDir(const fs::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
-std::string contents(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+fs::path freshDir(const std::string& name) { return test::freshDir(name); }
+std::vector<std::string> listDir(const fs::path& dir) { return test::listDir(dir.string()); }
+std::string contents(const fs::path& path) { return test::readFileText(path.string()); }
 
 TEST(AtomicFile, WritesThroughAHiddenTemporaryInTheSameFolder) {
     const fs::path dir = freshDir("atomic_ok");

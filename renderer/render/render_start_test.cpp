@@ -13,7 +13,8 @@ TEST(RenderStart, DescribesTheBackendAndWhyCudaWasNotUsed) {
     ASSERT_TRUE(cpu);
     EXPECT_EQ(fallback, "");
     EXPECT_EQ(describeBackend(*cpu, fallback), "cpu (2 CPU threads)");
-    EXPECT_EQ(describeBackend(*cpu, "no CUDA device: none"), "cpu (2 CPU threads); CUDA not used: no CUDA device: none");
+    EXPECT_EQ(describeBackend(*cpu, "no CUDA device: none"),
+              "cpu (2 CPU threads); CUDA not used: no CUDA device: none");
 }
 
 TEST(RenderStart, CudaWithoutADeviceIsRefusedWithItsReason) {

@@ -77,7 +77,8 @@ std::shared_ptr<const TextureImage> readTextureImage(const std::string& path, co
         FreeImage_OpenMemory(reinterpret_cast<BYTE*>(bytes.data()), DWORD(bytes.size())));
     Bitmap loaded(memory ? FreeImage_LoadFromMemory(freeImageFormat(header.format), memory.get(), 0) : nullptr);
     if (!loaded) {
-        const std::string why = freeImage.message().empty() ? "the image is damaged or unsupported" : freeImage.message();
+        const std::string why =
+            freeImage.message().empty() ? "the image is damaged or unsupported" : freeImage.message();
         diags.error(where, "cannot decode texture '" + path + "': " + why);
         return nullptr;
     }
