@@ -17,6 +17,7 @@
 #include "render/error_estimate.h"
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
+#include "render/render_start.h"
 #include "render_stats.h"
 #include "scene/scene_reader.h"
 
@@ -91,12 +92,7 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     const auto buildStart = std::chrono::steady_clock::now();
     FlattenResult flat = flatten(scene);
     stats.buildSeconds = secondsSince(buildStart);
-    if (!flat.unsupported.empty()) {
-        std::string list;
-        for (const std::string& s : flat.unsupported) list += (list.empty() ? "" : "; ") + s;
-        std::fprintf(stderr, "%s: warning: rendering without what this version cannot draw yet: %s\n",
-                     options.renderScene.c_str(), list.c_str());
-    }
+    printUnsupported(options.renderScene, flat.unsupported);
     stats.width = options.width.value_or((uint32_t)scene.settings.renderWidth);
     stats.height = options.height.value_or((uint32_t)scene.settings.renderHeight);
     const StrataBlocks blocks = options.blocks.value_or(headlessBlocks(flat.arrays));
@@ -125,18 +121,13 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
         return refuseMemory(", which cannot be allocated");
     }
 
-    std::string why;
-    std::unique_ptr<Backend> backend = createBackendFor(flat.arrays, options.backend, options.threads, why);
-    if (!backend) {
-        std::fprintf(stderr, "trazo: cannot use the CUDA backend: %s\n", why.c_str());
-        return 1;
-    }
+    std::string fallback;
+    std::unique_ptr<Backend> backend = openBackend(options.backend, options.threads, &flat.arrays, fallback);
+    if (!backend) return 1;
     stats.backend = backend->name();
     stats.device = backend->deviceName();
-    if (!options.quiet || options.backend == BackendChoice::Auto) {
-        std::fprintf(stderr, "trazo: rendering on %s (%s)%s%s\n", stats.backend.c_str(), stats.device.c_str(),
-                     why.empty() ? "" : "; CUDA not used: ", why.c_str());
-    }
+    if (!options.quiet || options.backend == BackendChoice::Auto)
+        std::fprintf(stderr, "trazo: rendering on %s\n", describeBackend(*backend, fallback).c_str());
 
     // What is needed of the arrays below is taken first: the backend may keep them instead of a copy.
     const uint32_t cameraPasses = cameraPathPasses(flat.arrays, blocks);

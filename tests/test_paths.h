@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace trazo::test {
 
@@ -9,5 +10,8 @@ std::string sourcePath(const std::string& relative);  // TRAZO_SOURCE_DIR/relati
 std::string trazoBinary();                             // path of the built CLI
 std::string tempPath(const std::string& name);         // a fresh path in a per-process temp dir
 std::string readFileText(const std::string& path);     // whole file, empty when unreadable
+// A fresh, empty folder tempPath(name), so "nothing else was left behind" is a listing; and that listing, sorted.
+std::string freshDir(const std::string& name);
+std::vector<std::string> listDir(const std::string& dir);
 
 }  // namespace trazo::test

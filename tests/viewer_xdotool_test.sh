@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A scripted viewer session under Xvfb with real X input (xdotool): open a small scene, press P (screenshot),
 # drag with the left button over the image (orbit), press P again. Passes when both screenshots were written
-# and differ (the orbit moved the camera), and Ctrl+Q closes the viewer with status 0.
+# and differ (the orbit moved the camera), Ctrl+S writes the edited scene beside the scene (a copy in the work
+# folder) and it reads back, and Ctrl+Q closes the viewer with status 0.
 # Usage: viewer_xdotool_test.sh TRAZO SCENES_DIR. Exit 77 (CTest SKIP_RETURN_CODE) without xvfb-run/xdotool.
 set -u
 trazo=$(realpath "$1")
@@ -45,8 +46,9 @@ press_p_for_shot() {  # presses P until screenshot number $1 exists (a key lost 
 }
 
 cd "$work"
+cp "$scenes/scene1_area.scene" "$work/scene1_area.scene"  # self-contained: Ctrl+S writes beside it, here
 # 160x120 renders fast; the window opens at 640x480 (the image scaled) with the panel on its left third.
-"$trazo" "$scenes/scene1_area.scene" --backend cpu --width 160 --height 120 --blocks 1 >"$work/viewer.log" 2>&1 &
+"$trazo" "$work/scene1_area.scene" --backend cpu --width 160 --height 120 --blocks 1 >"$work/viewer.log" 2>&1 &
 pid=$!
 wid=$(timeout 30 xdotool search --sync --onlyvisible --name '^trazo' | head -n 1)
 [ -n "$wid" ] || fail "the viewer window did not appear within 30 s"
@@ -79,6 +81,18 @@ done
 cmp -s "${shots[0]}" "$work/headless0.png" || fail "the first screenshot differs from --render --spp ${passes[0]}"
 cmp -s "${shots[1]}" "$work/headless1.png" && fail "the second screenshot still shows the file's camera"
 echo "ok: screenshot 1 == headless render of the file camera; screenshot 2 (after the orbit) is not"
+
+edited="$work/scene1_area-edited.scene"
+for _ in 1 2 3; do  # a key lost before focus is pressed again
+    xdotool key --clearmodifiers ctrl+s
+    for _ in $(seq 50); do [ -f "$edited" ] && break; sleep 0.1; done
+    [ -f "$edited" ] && break
+done
+[ -f "$edited" ] || fail "Ctrl+S did not write $edited"
+grep -q "^trazo: saved scene $edited\$" "$work/viewer.log" || fail "no 'saved scene' line for Ctrl+S"
+"$trazo" --render "$edited" --backend cpu --width 16 --height 12 --spp 1 -o "$work/edited.png" --quiet ||
+    fail "the scene Ctrl+S wrote does not render"
+echo "ok: Ctrl+S wrote the edited scene and it renders"
 
 xdotool key --clearmodifiers ctrl+q 2>/dev/null
 for _ in $(seq 100); do

@@ -10,6 +10,9 @@
 namespace trazo {
 namespace {
 
+// The viewer's background: behind the panels and around the image (linear RGB, written to the framebuffer as is).
+constexpr float kBackground[3] = {0.11f, 0.11f, 0.12f};
+
 GLuint compileShader(GLenum kind, const char* source, std::string& error) {
     const GLuint shader = glCreateShader(kind);
     glShaderSource(shader, 1, &source, nullptr);
@@ -123,7 +126,7 @@ bool Display::fillFromHost(Backend& backend) {
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
         return false;
     }
-    for (size_t i = 0; i < pixels; ++i) {  // as resolveImage() does
+    for (size_t i = 0; i < pixels; ++i) {
         const Vec3 c = accum_[i].estimate();
         rgba[4 * i + 0] = c.x;
         rgba[4 * i + 1] = c.y;
@@ -165,11 +168,13 @@ void Display::update(Backend& backend, uint32_t width, uint32_t height) {
 void Display::draw(int framebufferWidth, int framebufferHeight, const ToneSettings& tone) const {
     const ImageRect r = fitImage(framebufferWidth, framebufferHeight, width_, height_);
     glViewport(0, 0, framebufferWidth, framebufferHeight);
+    glClearColor(kBackground[0], kBackground[1], kBackground[2], 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
     glUseProgram(program_);
     glUniform4f(uImageRect_, r.x, r.y, std::max(r.width, 1.0f), std::max(r.height, 1.0f));
     glUniform1f(uExposure_, std::exp2(tone.exposureStops));
     glUniform1i(uToneMode_, tone.mode);
-    glUniform3f(uOutside_, 0.11f, 0.11f, 0.12f);
+    glUniform3f(uOutside_, kBackground[0], kBackground[1], kBackground[2]);
     glUniform1i(uEstimate_, 0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture_);

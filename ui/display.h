@@ -39,6 +39,7 @@ public:
     // Brings the backend's current estimate to the screen texture (width × height = the accumulation's size;
     // a new size reallocates). Interop first, unless it failed for this backend before.
     void update(Backend& backend, uint32_t width, uint32_t height);
+    // Clears the framebuffer to the viewer's background (also the colour around the image), then draws the image.
     void draw(int framebufferWidth, int framebufferHeight, const ToneSettings& tone) const;
 
     DisplayPath path() const { return path_; }

@@ -147,11 +147,11 @@ DirtyFlags drawLightsPanel(Scene& scene, PanelState& state) {
 
 void drawRenderPanel(PanelState& state, const RenderInfo& info, PanelActions& actions) {
     ImGui::Text("Backend: %s (%s)", info.backend.c_str(), info.device.c_str());
-    int choice = state.backend;
-    ImGui::RadioButton("CPU", &choice, 0);
+    BackendChoice choice = state.backend;
+    if (ImGui::RadioButton("CPU", choice == BackendChoice::Cpu)) choice = BackendChoice::Cpu;
     ImGui::SameLine();
     if (!info.cudaBuilt) ImGui::BeginDisabled();
-    ImGui::RadioButton("CUDA", &choice, 1);
+    if (ImGui::RadioButton("CUDA", choice == BackendChoice::Cuda)) choice = BackendChoice::Cuda;
     if (!info.cudaBuilt) ImGui::EndDisabled();
     if (choice != state.backend) {
         state.backend = choice;

@@ -28,7 +28,7 @@ struct PanelState {
     int material = 0;  // selected in the Materials panel
     int pointLight = 0, areaLight = 0;
     ToneSettings tone;
-    int backend = 0;           // 0 cpu, 1 cuda (the Render panel's choice)
+    BackendChoice backend = BackendChoice::Cpu;  // the Render panel's choice: Cpu or Cuda
     int targetPasses = 0;      // stop after this many one-stratum passes' worth of samples; 0 = keep going
     bool sizeFollowsWindow = false;
     char screenshotPath[1024] = {};

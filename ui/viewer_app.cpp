@@ -1,6 +1,7 @@
-// The viewer's frame loop. Each frame: events → camera and panel edits (marked dirty on the session); when the
-// worker's batch of passes is done, show it, apply the edits (re-upload, reset) and start the next batch sized
-// to the frame budget; draw the image and the panels. Timing lines for the closing stats.
+// The viewer's frame loop. Each frame: the window's gestures and commands → camera edits (marked dirty on the
+// session); when the worker's batch of passes is done, show it, apply the edits (re-upload, reset) and start
+// the next batch sized to the frame budget; build the panels, apply their actions, draw, present. Names and
+// saving are ExportController's, the closing line's numbers ViewerStats'.
 #include "viewer_app.h"
 
 #include <glad/gl.h>
@@ -14,18 +15,19 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 
 #include "camera_controller.h"
 #include "display.h"
+#include "export_controller.h"
 #include "image/image_writer.h"
 #include "panels.h"
 #include "render/progressive_render.h"
+#include "render/render_start.h"
 #include "render/strata_plan.h"
 #include "scene/scene_reader.h"
-#include "scene/scene_writer.h"
 #include "viewer_session.h"
+#include "viewer_stats.h"
 #include "window.h"
 
 namespace trazo {
@@ -45,23 +47,6 @@ constexpr double kPreviewHoldSeconds = 0.25;
 
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-void copyString(char* dst, size_t size, const std::string& src) { std::snprintf(dst, size, "%s", src.c_str()); }
-
-// trazo-YYYYMMDD-HHMMSS.png, with -2, -3… when that file exists already.
-std::string timestampedName(const char* extension) {
-    const std::time_t now = std::time(nullptr);
-    char stamp[32];
-    std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
-    std::string name = std::string("trazo-") + stamp + extension;
-    for (int i = 2; std::filesystem::exists(name); ++i) name = std::string("trazo-") + stamp + "-" + std::to_string(i) + extension;
-    return name;
-}
-
-std::string editedScenePath(const std::string& scenePath) {
-    const std::filesystem::path p(scenePath);
-    return (p.parent_path() / (p.stem().string() + "-edited.scene")).string();
-}
-
 // The window's starting size: the image's, kept on a usual screen and at least 640×480 (the panel needs room;
 // a small image is shown enlarged).
 void initialWindowSize(uint32_t width, uint32_t height, int& w, int& h) {
@@ -71,29 +56,16 @@ void initialWindowSize(uint32_t width, uint32_t height, int& w, int& h) {
     h = std::max(int(height * scale * shrink), 240);
 }
 
-bool saveImage(ViewerSession& session, const std::string& path, std::string& message) {
-    std::string error;
-    if (!writeImage(path, int(session.width()), int(session.height()), session.image(), error)) {
-        message = error;
-        return false;
-    }
-    message = "saved " + path + " (" + std::to_string(session.passes()) + " passes)";
-    return true;
-}
-
 class ViewerApp {
 public:
     ViewerApp(const ViewerOptions& options, Window& window, ViewerSession& session, Clock::time_point start)
-        : options_(options), window_(window), session_(session), start_(start) {
+        : options_(options), window_(window), session_(session),
+          exports_(options.scenePath, options.screenshot, state_), stats_(start) {
         std::string device;
         cudaBuilt_ = cudaDeviceAvailable(device) || session.backend().name() == "cuda";
-        state_.backend = session.backend().name() == "cuda" ? 1 : 0;
+        state_.backend = runningBackend();
         state_.targetPasses = options.frames ? int(*options.frames)
                                              : int(std::max(kDefaultTargetPasses, session.cyclePasses()));
-        autoName_ = options.screenshot.empty() ? timestampedName(".png") : "";
-        copyString(state_.screenshotPath, sizeof state_.screenshotPath,
-                   options.screenshot.empty() ? autoName_ : options.screenshot);
-        copyString(state_.scenePath, sizeof state_.scenePath, editedScenePath(options.scenePath));
         session_.setOnBatchDone(&Window::wake);
         // Larger blocks while a pass still fits the batch budget, unless --blocks fixes them; --frames keeps one
         // stratum per pass, so its image is `--render --blocks 1 --spp N`.
@@ -101,73 +73,90 @@ public:
         else if (!options.frames) session_.setBlocks(StrataBlocks::ones(), kBatchSeconds);
     }
 
+    // The frame loop of Dear ImGui's examples (poll, build the UI, apply its actions, render, present), with the
+    // renderer's batches stepped between the input and the UI, and a frame drawn only when something changed.
     int run(Display& display) {
         int status = 0;
         auto lastFrame = Clock::now();
         while (!window_.shouldClose()) {
-            const bool running = session_.busy();
-            const bool finished = state_.targetPasses > 0 && session_.samples() >= double(state_.targetPasses) &&
-                                  session_.dirty() == kDirtyNone && !screenshotPending_;
-            // Woken early by input or by the batch's end (Window::wake); ImGui gets a few frames to settle.
-            if (running || (finished && session_.generation() == shownGeneration_)) {
-                window_.waitEvents(settleFrames_ > 0 ? 1.0 / 60.0 : 0.5);
-            } else {
-                window_.pollEvents();
-            }
+            waitForEvents();
             const auto frameStart = Clock::now();
             const double dt = std::min(std::chrono::duration<double>(frameStart - lastFrame).count(), 0.1);
             lastFrame = frameStart;
             const bool active = window_.takeActivity();
-            if (handleInput(dt) || active) settleFrames_ = 3;
+            if (applyInput(dt) || active) settleFrames_ = 3;
 
             bool imageChanged = false;
             if (!session_.busy()) {
-                // After a reset the last image stays up until the first new passes are done (no black flash).
-                if (session_.generation() != shownGeneration_ && session_.passes() > 0) {
-                    display.update(session_.backend(), session_.width(), session_.height());
-                    shownGeneration_ = session_.generation();
-                    imageChanged = true;
-                    imageShown_ = true;
-                    if (session_.previewDivisor() == 1) fullImageShown_ = true;
-                }
+                imageChanged = showFinishedBatch(display);
                 if (options_.frames && session_.passes() >= *options_.frames && session_.dirty() == kDirtyNone) {
                     status = finishAutomation();
                     break;
                 }
-                if (screenshotPending_ && session_.dirty() == kDirtyNone && session_.passes() > 0 &&
-                    session_.previewDivisor() == 1)
-                    takeScreenshot();
-                if (!options_.frames) choosePreview();
-                const uint32_t target = state_.targetPasses > 0 ? uint32_t(state_.targetPasses) : kMaxProgressivePasses;
-                if (session_.dirty() != kDirtyNone) session_.applyEdits();
-                if (session_.samples() < double(target)) {
-                    // The target counts one-stratum passes; a pass of a grown segment stands for several.
-                    const double left = (double(target) - session_.samples()) / session_.blocksWeight();
-                    const double budget = session_.passesForBudget(kBatchSeconds);
-                    session_.startPasses(uint32_t(std::clamp(std::ceil(left), 1.0, budget)));
-                    ++batches_;
-                }
+                startNextBatch();
             }
             // Redraw only when something changed: an idle window leaves the cores to the renderer.
-            if (active || imageChanged || settleFrames_ > 0 || frames_ == 0) {
-                drawFrame(display);
-                if (!active && settleFrames_ > 0) --settleFrames_;
-                if (window_.dragging()) {  // the interactive frame rate: frames drawn while a drag goes on
-                    const auto now = Clock::now();
-                    if (lastDragFrame_ != Clock::time_point{} && secondsSince(lastDragFrame_) < 0.5) {
-                        ++dragFrames_;
-                        dragSeconds_ += std::chrono::duration<double>(now - lastDragFrame_).count();
-                        dragWorkSeconds_ += std::chrono::duration<double>(now - frameStart).count();
-                    }
-                    lastDragFrame_ = now;
-                }
-            }
+            if (!active && !imageChanged && settleFrames_ <= 0 && stats_.frames() > 0) continue;
+            int fbw, fbh;
+            window_.framebufferSize(fbw, fbh);
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplGlfw_NewFrame();
+            ImGui::NewFrame();
+            apply(drawPanels(session_.scene(), state_, renderInfo(display)));
+            ImGui::Render();
+            display.draw(fbw, fbh, state_.tone);
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            window_.swapBuffers();
+            stats_.frameShown(frameStart, Clock::now(), imageShown_, fullImageShown_, window_.dragging());
+            if (state_.sizeFollowsWindow) followWindowSize(fbw, fbh);
+            if (!active && settleFrames_ > 0) --settleFrames_;
         }
         printStats(display);
         return status;
     }
 
 private:
+    // Woken early by input or by the batch's end (Window::wake); ImGui gets a few frames to settle.
+    void waitForEvents() {
+        const bool finished = state_.targetPasses > 0 && session_.samples() >= double(state_.targetPasses) &&
+                              session_.dirty() == kDirtyNone && !screenshotPending_;
+        if (session_.busy() || (finished && session_.generation() == shownGeneration_)) {
+            window_.waitEvents(settleFrames_ > 0 ? 1.0 / 60.0 : 0.5);
+        } else {
+            window_.pollEvents();
+        }
+    }
+
+    // Puts the finished batch on screen; true when the image changed. After a reset the last image stays up
+    // until the first new passes are done (no black flash).
+    bool showFinishedBatch(Display& display) {
+        if (session_.generation() == shownGeneration_ || session_.passes() == 0) return false;
+        display.update(session_.backend(), session_.width(), session_.height());
+        shownGeneration_ = session_.generation();
+        imageShown_ = true;
+        if (session_.previewDivisor() == 1) fullImageShown_ = true;
+        return true;
+    }
+
+    // A pending screenshot, then the edits, then passes sized to the batch budget.
+    void startNextBatch() {
+        if (screenshotPending_ && session_.dirty() == kDirtyNone && session_.passes() > 0 &&
+            session_.previewDivisor() == 1) {
+            screenshotPending_ = false;
+            exports_.saveScreenshot(session_, state_);
+        }
+        if (!options_.frames) choosePreview();
+        const uint32_t target = state_.targetPasses > 0 ? uint32_t(state_.targetPasses) : kMaxProgressivePasses;
+        if (session_.dirty() != kDirtyNone) session_.applyEdits();
+        if (session_.samples() < double(target)) {
+            // The target counts one-stratum passes; a pass of a grown segment stands for several.
+            const double left = (double(target) - session_.samples()) / session_.blocksWeight();
+            const double budget = session_.passesForBudget(kBatchSeconds);
+            session_.startPasses(uint32_t(std::clamp(std::ceil(left), 1.0, budget)));
+            stats_.batchStarted();
+        }
+    }
+
     void choosePreview() {
         const bool starting = !imageShown_ && session_.passes() == 0;
         const bool editing = lastEdit_ != Clock::time_point{} && secondsSince(lastEdit_) < kPreviewHoldSeconds;
@@ -184,14 +173,14 @@ private:
         session_.setPreviewDivisor(divisor);
     }
 
-    // Returns true while the camera is flying (keys held send no events, yet the frames must go on).
-    bool handleInput(double dt) {
+    // The window's gestures and commands; true while the camera is flying (keys held send no events, yet the
+    // frames must go on).
+    bool applyInput(double dt) {
         const ImGuiIO& io = ImGui::GetIO();
         window_.setUiCapture(io.WantCaptureMouse, io.WantCaptureKeyboard);
         const InputEvents e = window_.takeEvents();
         Camera& camera = session_.scene().camera;
         DirtyFlags dirty = kDirtyNone;
-        bool flying = false;
         if (e.orbitX != 0 || e.orbitY != 0) {
             controller_.orbit(camera, e.orbitX, e.orbitY);
             dirty |= kDirtyCamera;
@@ -207,36 +196,78 @@ private:
             controller_.dolly(camera, e.scroll);
             dirty |= kDirtyCamera;
         }
-        for (const InputEvents::Key& k : e.keys) {
-            const bool ctrl = k.mods & GLFW_MOD_CONTROL;
-            if (k.key == GLFW_KEY_F && !ctrl) {
+        for (const ViewerCommand command : e.commands) dirty |= execute(command);
+        const FlyKeys fly = window_.flyKeys();
+        if (fly.moving()) {
+            controller_.fly(camera, fly.forward, fly.right, fly.up, float(dt));
+            dirty |= kDirtyCamera;
+        }
+        markEdited(dirty);
+        return fly.moving();
+    }
+
+    // One command, from a key or a panel button; what of the scene it changed.
+    DirtyFlags execute(ViewerCommand command) {
+        Camera& camera = session_.scene().camera;
+        switch (command) {
+            case ViewerCommand::FrameScene:
                 controller_.frame(camera, sceneBounds(session_.arrays()));
-                dirty |= kDirtyCamera;
-            } else if (k.key == GLFW_KEY_R && !ctrl) {
+                return kDirtyCamera;
+            case ViewerCommand::ResetCamera:
                 controller_.reset(camera, session_.fileScene().camera);
-                dirty |= kDirtyCamera;
-            } else if ((k.key == GLFW_KEY_P && !ctrl) || k.key == GLFW_KEY_F12) {
-                screenshotPending_ = true;
-            } else if (k.key == GLFW_KEY_S && ctrl) {
-                saveScene();
-            } else if (k.key == GLFW_KEY_Q && ctrl) {
-                window_.requestClose();
-            }
+                return kDirtyCamera;
+            case ViewerCommand::Screenshot: screenshotPending_ = true; break;
+            case ViewerCommand::SaveScene: exports_.saveScene(session_.scene(), state_); break;
+            case ViewerCommand::Quit: window_.requestClose(); break;
         }
-        // Fly while WASD/QE are held (not with Ctrl: Ctrl+S saves).
-        if (!window_.keyDown(GLFW_KEY_LEFT_CONTROL) && !window_.keyDown(GLFW_KEY_RIGHT_CONTROL)) {
-            const float forward = float(window_.keyDown(GLFW_KEY_W)) - float(window_.keyDown(GLFW_KEY_S));
-            const float right = float(window_.keyDown(GLFW_KEY_D)) - float(window_.keyDown(GLFW_KEY_A));
-            const float up = float(window_.keyDown(GLFW_KEY_E)) - float(window_.keyDown(GLFW_KEY_Q));
-            if (forward != 0 || right != 0 || up != 0) {
-                controller_.fly(camera, forward, right, up, float(dt));
-                dirty |= kDirtyCamera;
-                flying = true;
-            }
-        }
-        session_.markDirty(dirty);
+        return kDirtyNone;
+    }
+
+    void apply(const PanelActions& a) {
+        DirtyFlags dirty = a.dirty;
+        if (a.frameScene) dirty |= execute(ViewerCommand::FrameScene);
+        if (a.resetCamera) dirty |= execute(ViewerCommand::ResetCamera);
+        if (a.restart) dirty |= kDirtyCamera;
+        if (dirty & kDirtySize)
+            session_.setRenderSize(uint32_t(session_.scene().settings.renderWidth),
+                                   uint32_t(session_.scene().settings.renderHeight));
+        markEdited(dirty);
+        if (a.switchBackend) switchBackend(state_.backend);
+        if (a.screenshot) execute(ViewerCommand::Screenshot);
+        if (a.newScreenshotName) exports_.renameScreenshot(state_);
+        if (a.saveScene) execute(ViewerCommand::SaveScene);
+    }
+
+    // Edits restart the image, at preview size for kPreviewHoldSeconds.
+    void markEdited(DirtyFlags dirty) {
         if (dirty) lastEdit_ = Clock::now();
-        return flying;
+        session_.markDirty(dirty);
+    }
+
+    BackendChoice runningBackend() const {
+        return session_.backend().name() == "cuda" ? BackendChoice::Cuda : BackendChoice::Cpu;
+    }
+
+    void switchBackend(BackendChoice choice) {
+        std::string why;
+        auto backend = createBackendFor(session_.arrays(), choice, options_.threads, why);
+        if (backend) {
+            session_.replaceBackend(std::move(backend));
+            state_.status = "now rendering on " + session_.backend().name();
+        } else {
+            state_.backend = runningBackend();
+            state_.status = "cannot use CUDA: " + why;
+        }
+    }
+
+    // Render at the window's size: the accumulation (and the display) are reallocated when it changes.
+    void followWindowSize(int fbw, int fbh) {
+        SceneSettings& s = session_.scene().settings;
+        if (fbw <= 0 || fbh <= 0 || (s.renderWidth == fbw && s.renderHeight == fbh)) return;
+        s.renderWidth = std::min(fbw, kMaxRenderSize);
+        s.renderHeight = std::min(fbh, kMaxRenderSize);
+        session_.setRenderSize(uint32_t(s.renderWidth), uint32_t(s.renderHeight));
+        session_.markDirty(kDirtyCamera);
     }
 
     RenderInfo renderInfo(const Display& display) {
@@ -263,93 +294,10 @@ private:
         return info;
     }
 
-    void drawFrame(Display& display) {
-        ImGui_ImplOpenGL3_NewFrame();
-        ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
-        const PanelActions actions = drawPanels(session_.scene(), state_, renderInfo(display));
-        apply(actions);
-        ImGui::Render();
-
-        int fbw, fbh;
-        window_.framebufferSize(fbw, fbh);
-        glViewport(0, 0, fbw, fbh);
-        glClearColor(0.11f, 0.11f, 0.12f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-        display.draw(fbw, fbh, state_.tone);
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-        window_.swapBuffers();
-        ++frames_;
-        // On screen once swapped.
-        if (imageShown_ && firstImageSeconds_ < 0) firstImageSeconds_ = secondsSince(start_);
-        if (fullImageShown_ && fullImageSeconds_ < 0) fullImageSeconds_ = secondsSince(start_);
-        if (state_.sizeFollowsWindow && fbw > 0 && fbh > 0) {
-            // Render at the window's size: the accumulation (and the display) are reallocated when it changes.
-            SceneSettings& s = session_.scene().settings;
-            if (s.renderWidth != fbw || s.renderHeight != fbh) {
-                s.renderWidth = std::min(fbw, kMaxRenderSize);
-                s.renderHeight = std::min(fbh, kMaxRenderSize);
-                session_.setRenderSize(uint32_t(s.renderWidth), uint32_t(s.renderHeight));
-                session_.markDirty(kDirtyCamera);
-            }
-        }
-    }
-
-    void apply(const PanelActions& a) {
-        Camera& camera = session_.scene().camera;
-        DirtyFlags dirty = a.dirty;
-        if (a.frameScene) controller_.frame(camera, sceneBounds(session_.arrays()));
-        if (a.resetCamera) controller_.reset(camera, session_.fileScene().camera);
-        if (a.frameScene || a.resetCamera || a.restart) dirty |= kDirtyCamera;
-        if (dirty) lastEdit_ = Clock::now();
-        if (dirty & kDirtySize)
-            session_.setRenderSize(uint32_t(session_.scene().settings.renderWidth),
-                                   uint32_t(session_.scene().settings.renderHeight));
-        session_.markDirty(dirty);
-        if (a.switchBackend) {
-            std::string why;
-            const BackendChoice choice = state_.backend == 1 ? BackendChoice::Cuda : BackendChoice::Cpu;
-            auto backend = createBackendFor(session_.arrays(), choice, options_.threads, why);
-            if (backend) {
-                session_.replaceBackend(std::move(backend));
-                state_.status = "now rendering on " + session_.backend().name();
-            } else {
-                state_.backend = session_.backend().name() == "cuda" ? 1 : 0;
-                state_.status = "cannot use CUDA: " + why;
-            }
-        }
-        if (a.screenshot) screenshotPending_ = true;
-        if (a.newScreenshotName) {
-            const std::string extension = std::filesystem::path(state_.screenshotPath).extension().string();
-            autoName_ = timestampedName(extension.empty() ? ".png" : extension.c_str());
-            copyString(state_.screenshotPath, sizeof state_.screenshotPath, autoName_);
-        }
-        if (a.saveScene) saveScene();
-    }
-
-    void takeScreenshot() {
-        screenshotPending_ = false;
-        const std::string path = state_.screenshotPath;
-        saveImage(session_, path, state_.status);
-        std::fprintf(stderr, "trazo: %s\n", state_.status.c_str());
-        // A default name is used once; the next screenshot gets a fresh one (a typed name is reused).
-        if (!autoName_.empty() && path == autoName_) {
-            autoName_ = timestampedName(std::filesystem::path(path).extension().string().c_str());
-            copyString(state_.screenshotPath, sizeof state_.screenshotPath, autoName_);
-        }
-    }
-
-    void saveScene() {
-        std::string error;
-        const std::string path = state_.scenePath;
-        state_.status = writeSceneFile(session_.scene(), path, error) ? "saved scene " + path : error;
-        std::fprintf(stderr, "trazo: %s\n", state_.status.c_str());
-    }
-
     int finishAutomation() {
         if (options_.screenshot.empty()) return 0;
         std::string message;
-        if (!saveImage(session_, options_.screenshot, message)) {
+        if (!saveSessionImage(session_, options_.screenshot, message)) {
             std::fprintf(stderr, "trazo: %s\n", message.c_str());
             return 1;
         }
@@ -359,39 +307,28 @@ private:
     void printStats(const Display& display) {
         if (options_.quiet) return;
         session_.waitIdle();
-        const double total = secondsSince(start_);
         const double perPass = session_.passes() ? session_.renderSeconds() / session_.passes() : 0.0;
-        std::fprintf(stderr,
-                     "trazo: viewer %ux%u on %s (%s), display through %s: first image after %.3f s (full size after "
-                     "%.3f s); %.2f s open, %llu frames drawn; while dragging %.1f fps (%llu frames, %.1f ms of work "
-                     "each); %llu batches; %u passes since the last reset (%.3f s/pass, %.2f Mrays/s)\n",
+        std::fprintf(stderr, "trazo: viewer %ux%u on %s (%s), display through %s: %s; %u passes since the last reset "
+                             "(%.3f s/pass, %.2f Mrays/s)\n",
                      session_.renderWidth(), session_.renderHeight(), session_.backend().name().c_str(),
-                     session_.backend().deviceName().c_str(), displayPathName(display.path()), firstImageSeconds_,
-                     fullImageSeconds_, total, (unsigned long long)frames_,
-                     dragSeconds_ > 0 ? double(dragFrames_) / dragSeconds_ : 0.0, (unsigned long long)dragFrames_,
-                     dragFrames_ ? 1e3 * dragWorkSeconds_ / double(dragFrames_) : 0.0, (unsigned long long)batches_,
-                     session_.passes(), perPass,
+                     session_.backend().deviceName().c_str(), displayPathName(display.path()),
+                     stats_.summary(Clock::now()).c_str(), session_.passes(), perPass,
                      session_.renderSeconds() > 0 ? double(session_.rays()) / session_.renderSeconds() * 1e-6 : 0.0);
     }
 
     const ViewerOptions& options_;
     Window& window_;
     ViewerSession& session_;
-    Clock::time_point start_;
     CameraController controller_;
     PanelState state_;
+    ExportController exports_;
+    ViewerStats stats_;
     bool cudaBuilt_ = false;
-    std::string autoName_;  // the timestamped default in the Image field, while the user keeps it
     bool screenshotPending_ = false;
     bool imageShown_ = false, fullImageShown_ = false;
     uint64_t shownGeneration_ = ~uint64_t(0);
-    uint64_t frames_ = 0, batches_ = 0;
     int settleFrames_ = 0;
-    double firstImageSeconds_ = -1.0, fullImageSeconds_ = -1.0;
     Clock::time_point lastEdit_{};
-    uint64_t dragFrames_ = 0;  // frames drawn during drags, the time between them, and their own work
-    double dragSeconds_ = 0.0, dragWorkSeconds_ = 0.0;
-    Clock::time_point lastDragFrame_{};
 };
 
 }  // namespace
@@ -429,15 +366,11 @@ int runViewer(const ViewerOptions& options) {
 
     int status = 0;
     try {
-        std::string why;
-        std::unique_ptr<Backend> backend = createBackend(options.backend, options.threads, why);
-        if (!backend) {
-            std::fprintf(stderr, "trazo: cannot use the CUDA backend: %s\n", why.c_str());
-            return 1;
-        }
+        std::string fallback;
+        std::unique_ptr<Backend> backend = openBackend(options.backend, options.threads, nullptr, fallback);
+        if (!backend) return 1;
         if (!options.quiet)
-            std::fprintf(stderr, "trazo: viewer on %s (%s)%s%s; GL %s\n", backend->name().c_str(),
-                         backend->deviceName().c_str(), why.empty() ? "" : "; CUDA not used: ", why.c_str(),
+            std::fprintf(stderr, "trazo: viewer on %s; GL %s\n", describeBackend(*backend, fallback).c_str(),
                          reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
         Display display;
         if (!display.init(error)) {
@@ -446,12 +379,7 @@ int runViewer(const ViewerOptions& options) {
             return 1;
         }
         ViewerSession session(std::move(scene), std::move(backend), options.seed, width, height);
-        if (!session.unsupported().empty() && !options.quiet) {
-            std::string list;
-            for (const std::string& s : session.unsupported()) list += (list.empty() ? "" : "; ") + s;
-            std::fprintf(stderr, "%s: warning: rendering without what this version cannot draw yet: %s\n",
-                         options.scenePath.c_str(), list.c_str());
-        }
+        if (!options.quiet) printUnsupported(options.scenePath, session.unsupported());
 
         IMGUI_CHECKVERSION();
         ImGui::CreateContext();

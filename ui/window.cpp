@@ -1,5 +1,5 @@
-// Window: GLFW set-up and input callbacks. The callbacks are installed before ImGui's GLFW backend, which
-// chains to them, so both see every event.
+// Window: GLFW set-up, input callbacks and the key bindings. The callbacks are installed before ImGui's GLFW
+// backend, which chains to them, so both see every event.
 #include "window.h"
 
 #include <glad/gl.h>
@@ -19,6 +19,18 @@ void glfwErrorCallback(int code, const char* description) {
 }
 
 Window* self(GLFWwindow* w) { return static_cast<Window*>(glfwGetWindowUserPointer(w)); }
+
+// The key bindings (README's key list); false for a key that is no command.
+bool commandForKey(int key, int mods, ViewerCommand& command) {
+    const bool ctrl = mods & GLFW_MOD_CONTROL;
+    if (key == GLFW_KEY_F && !ctrl) command = ViewerCommand::FrameScene;
+    else if (key == GLFW_KEY_R && !ctrl) command = ViewerCommand::ResetCamera;
+    else if ((key == GLFW_KEY_P && !ctrl) || key == GLFW_KEY_F12) command = ViewerCommand::Screenshot;
+    else if (key == GLFW_KEY_S && ctrl) command = ViewerCommand::SaveScene;
+    else if (key == GLFW_KEY_Q && ctrl) command = ViewerCommand::Quit;
+    else return false;
+    return true;
+}
 
 }  // namespace
 
@@ -90,6 +102,15 @@ bool Window::takeActivity() {
 }
 
 bool Window::keyDown(int key) const { return !uiKeyboard_ && glfwGetKey(window_, key) == GLFW_PRESS; }
+
+FlyKeys Window::flyKeys() const {
+    if (keyDown(GLFW_KEY_LEFT_CONTROL) || keyDown(GLFW_KEY_RIGHT_CONTROL)) return {};
+    FlyKeys fly;
+    fly.forward = float(keyDown(GLFW_KEY_W)) - float(keyDown(GLFW_KEY_S));
+    fly.right = float(keyDown(GLFW_KEY_D)) - float(keyDown(GLFW_KEY_A));
+    fly.up = float(keyDown(GLFW_KEY_E)) - float(keyDown(GLFW_KEY_Q));
+    return fly;
+}
 void Window::framebufferSize(int& width, int& height) const { glfwGetFramebufferSize(window_, &width, &height); }
 void Window::pollEvents() { glfwPollEvents(); }
 void Window::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
@@ -133,7 +154,8 @@ void Window::onScroll(double dy) {
 
 void Window::onKey(int key, int action, int mods) {
     activity_ = true;
-    if (action == GLFW_PRESS && !uiKeyboard_) events_.keys.push_back({key, mods});
+    ViewerCommand command;
+    if (action == GLFW_PRESS && !uiKeyboard_ && commandForKey(key, mods, command)) events_.commands.push_back(command);
 }
 
 }  // namespace trazo

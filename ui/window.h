@@ -1,5 +1,5 @@
 // Window: the GLFW window with its OpenGL 3.3 core context (loaded by glad), and the mouse and keys turned
-// into camera gestures. Drags that start over an ImGui panel stay with the panel.
+// into camera gestures and viewer commands. Drags that start over an ImGui panel stay with the panel.
 #pragma once
 
 #include <memory>
@@ -10,16 +10,21 @@ struct GLFWwindow;
 
 namespace trazo {
 
+// What a key press asks of the viewer (the bindings: README's key list). The panels' buttons ask the same.
+enum class ViewerCommand { FrameScene, ResetCamera, Screenshot, SaveScene, Quit };
+
 // What the user did since the last takeEvents().
 struct InputEvents {
     float orbitX = 0, orbitY = 0;  // left drag, pixels
     float panX = 0, panY = 0;      // middle or shift+left drag, pixels
     float scroll = 0;              // wheel notches, forward > 0
-    struct Key {
-        int key;   // GLFW_KEY_*
-        int mods;  // GLFW_MOD_*
-    };
-    std::vector<Key> keys;  // presses, in order
+    std::vector<ViewerCommand> commands;  // in the order their keys were pressed
+};
+
+// The fly keys held now, each axis -1, 0 or 1 (W/S forward, D/A right, E/Q up).
+struct FlyKeys {
+    float forward = 0, right = 0, up = 0;
+    bool moving() const { return forward != 0 || right != 0 || up != 0; }
 };
 
 class Window {
@@ -40,7 +45,8 @@ public:
     // True when any window event (input, resize, expose, focus) arrived since the last call: the frame loop
     // redraws only then, or when the image changed, so the UI leaves the cores to the renderer.
     bool takeActivity();
-    bool keyDown(int key) const;
+    // None while Ctrl is held (Ctrl+S saves, Ctrl+Q quits) or while ImGui has the keyboard.
+    FlyKeys flyKeys() const;
     bool dragging() const { return drag_ != Drag::None; }
     void framebufferSize(int& width, int& height) const;
     void pollEvents();
@@ -58,6 +64,7 @@ public:
 
 private:
     explicit Window(GLFWwindow* window);
+    bool keyDown(int key) const;
 
     enum class Drag { None, Orbit, Pan };
     GLFWwindow* window_;

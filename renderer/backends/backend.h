@@ -9,6 +9,7 @@
 #include "device/scene_arrays.h"
 #include "integrator/frame_params.h"
 #include "integrator/ray_query.h"
+#include "render/accumulation.h"
 
 namespace trazo {
 

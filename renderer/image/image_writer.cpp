@@ -1,10 +1,10 @@
-// Image output (host): converts a linear float image to a FreeImage bitmap and saves it atomically.
+// Image output (host): converts a linear float image to a FreeImage bitmap and saves it through
+// replaceAtomically.
 #include "image/image_writer.h"
 
 #include <FreeImage.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -12,9 +12,10 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <mutex>
 #include <system_error>
-#include <unistd.h>
+
+#include "io/atomic_file.h"
+#include "io/freeimage_lock.h"
 
 namespace trazo {
 
@@ -99,30 +100,6 @@ int DLL_CALLCONV sinkSeek(fi_handle handle, long offset, int origin) {
 
 long DLL_CALLCONV sinkTell(fi_handle handle) { return std::ftell(static_cast<FileSink*>(handle)->file); }
 
-// Harmless when the shared library already initialised itself; needed when FreeImage is linked statically.
-void ensureFreeImage() {
-    static std::once_flag once;
-    std::call_once(once, [] { FreeImage_Initialise(FALSE); });
-}
-
-// A name no other writer (thread or process) in the folder uses: hidden, with pid and a counter.
-fs::path temporaryPathFor(const fs::path& target) {
-    static std::atomic<unsigned> counter{0};
-    fs::path dir = target.parent_path();
-    for (;;) {
-        // Appended piece by piece: `"." + std::string&&` trips GCC 12's false -Wrestrict (PR 105329).
-        std::string name = ".";
-        name += target.filename().string();
-        name += ".tmp";
-        name += std::to_string(getpid());
-        name += '_';
-        name += std::to_string(counter.fetch_add(1));
-        fs::path candidate = dir / name;
-        std::error_code ec;
-        if (!fs::exists(candidate, ec)) return candidate;
-    }
-}
-
 std::string errnoText(int err) { return std::strerror(err); }
 
 }  // namespace
@@ -167,7 +144,7 @@ bool writeImage(const std::string& path, int width, int height, const std::vecto
         return false;
     }
 
-    ensureFreeImage();
+    const FreeImageLock freeImage;
     const FormatInfo info = formatInfo(format);
     FIBITMAP* bitmap = makeBitmap(info, width, height, rgbTopDown);
     if (!bitmap) {
@@ -175,38 +152,31 @@ bool writeImage(const std::string& path, int width, int height, const std::vecto
                 std::to_string(height) + " image";
         return false;
     }
-
-    const fs::path temp = temporaryPathFor(dir / target.filename());
-    FileSink sink;
-    sink.file = std::fopen(temp.c_str(), "w+b");
-    if (!sink.file) {
-        const int openErrno = errno;  // before any allocation below can touch errno
-        error = "cannot write '" + path + "': cannot create a file in folder '" + dir.string() +
-                "': " + errnoText(openErrno);
-        FreeImage_Unload(bitmap);
-        return false;
-    }
-    FreeImageIO io{sinkRead, sinkWrite, sinkSeek, sinkTell};
-    const bool saved = FreeImage_SaveToHandle(info.fif, bitmap, &io, &sink, info.flags);
+    const bool written = replaceAtomically(
+        path,
+        [&](const std::string& temporary, std::string& why) {
+            FileSink sink;
+            sink.file = std::fopen(temporary.c_str(), "w+b");
+            if (!sink.file) {
+                const int openErrno = errno;  // before any allocation below can touch errno
+                why = "cannot write '" + path + "': cannot create a file in folder '" + dir.string() +
+                      "': " + errnoText(openErrno);
+                return false;
+            }
+            FreeImageIO io{sinkRead, sinkWrite, sinkSeek, sinkTell};
+            const bool saved = FreeImage_SaveToHandle(info.fif, bitmap, &io, &sink, info.flags);
+            const bool flushed = std::fflush(sink.file) == 0;
+            if (!flushed && sink.writeErrno == 0) sink.writeErrno = errno;
+            const bool closed = std::fclose(sink.file) == 0;
+            if (!closed && sink.writeErrno == 0) sink.writeErrno = errno;
+            if (saved && flushed && closed && sink.writeErrno == 0) return true;
+            why = "cannot write '" + path + "': FreeImage failed to write the " + info.name + " file";
+            if (sink.writeErrno != 0) why += ": " + errnoText(sink.writeErrno);
+            return false;
+        },
+        error);
     FreeImage_Unload(bitmap);
-    const bool flushed = std::fflush(sink.file) == 0;
-    if (!flushed && sink.writeErrno == 0) sink.writeErrno = errno;
-    const bool closed = std::fclose(sink.file) == 0;
-    if (!closed && sink.writeErrno == 0) sink.writeErrno = errno;
-
-    if (!saved || !flushed || !closed || sink.writeErrno != 0) {
-        fs::remove(temp, ec);
-        error = "cannot write '" + path + "': FreeImage failed to write the " + info.name + " file";
-        if (sink.writeErrno != 0) error += ": " + errnoText(sink.writeErrno);
-        return false;
-    }
-    fs::rename(temp, target, ec);
-    if (ec) {
-        error = "cannot write '" + path + "': cannot replace it: " + ec.message();
-        fs::remove(temp, ec);
-        return false;
-    }
-    return true;
+    return written;
 }
 
 }  // namespace trazo

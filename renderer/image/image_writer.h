@@ -21,8 +21,8 @@ std::string unknownImageFormatReason(const std::string& path);
 // PNG, BMP and TGA hold those bytes exactly. .exr (32-bit float), .hdr (RGBE) and .pfm store c linear
 // and unchanged (EXR and PFM exactly; RGBE to within ~1% of a pixel's largest channel, no negatives).
 // PFM rows run bottom to top as the format requires (FreeImage's own PFM reader shows them upside down).
-// Writes to a temporary file in the same folder and renames it over `path` only on success, so a failure
-// never leaves a half-written file or a temporary behind and an existing `path` stays as it was.
+// Written through replaceAtomically (io/atomic_file.h): a failure never leaves a half-written file or a
+// temporary behind, and an existing `path` stays as it was.
 // Returns false with a plain reason in `error` on failure (unknown extension, bad size, missing or
 // unwritable folder, FreeImage or disk failure).
 bool writeImage(const std::string& path, int width, int height, const std::vector<Vec3>& rgbTopDown,

@@ -24,19 +24,9 @@ namespace fs = std::filesystem;
 using Rgb8 = std::array<int, 3>;
 
 // A fresh, empty folder per test, so "nothing else was left behind" is a directory listing.
-fs::path freshDir(const std::string& name) {
-    fs::path dir = test::tempPath("image_writer_" + name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path freshDir(const std::string& name) { return test::freshDir("image_writer_" + name); }
 
-std::vector<std::string> listDir(const fs::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
+std::vector<std::string> listDir(const fs::path& dir) { return test::listDir(dir.string()); }
 
 FIBITMAP* loadImage(const fs::path& path) {
     FREE_IMAGE_FORMAT fif = FreeImage_GetFileType(path.c_str());

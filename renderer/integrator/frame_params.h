@@ -33,31 +33,4 @@ struct FrameParams {
     }
 };
 
-// Accumulation per pixel: RGB sums of weighted samples and the sum of their weights
-// (FrameParams::sampleWeight; 1 for every sample of a headless render, so `count` is then the sample count).
-// `sum`/`count` hold every sample (the image is estimate() = sum / count); `sumB`/`countB` hold the samples of
-// second-half passes only, so the first half is (sum - sumB, count - countB). Two half estimates of the same
-// pixel give its error (error_estimate.h). Doubles: a float count stops counting at 2^24 samples and a float
-// sum stops growing long before, while passes go to 2^30 and the viewer's weights multiply them.
-struct AccumPixel {
-    double sum[3];
-    double count;
-    double sumB[3];
-    double countB;
-    TRAZO_HD void add(Vec3 sample, bool secondHalf, float weight) {
-        const double w = weight;
-        for (int c = 0; c < 3; ++c) sum[c] += w * sample[c];
-        count += w;
-        if (secondHalf) {
-            for (int c = 0; c < 3; ++c) sumB[c] += w * sample[c];
-            countB += w;
-        }
-    }
-    // The pixel's estimate: what the image shows (resolveImage, the viewer's displays).
-    TRAZO_HD Vec3 estimate() const {
-        if (!(count > 0.0)) return Vec3(0.0f);
-        return Vec3(float(sum[0] / count), float(sum[1] / count), float(sum[2] / count));
-    }
-};
-
 }  // namespace trazo

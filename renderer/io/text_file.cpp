@@ -1,5 +1,5 @@
-// readWholeFile: open, fstat, read into a string of that size. writeTextFileAtomically: temporary file in the
-// target's folder, flushed, then renamed over the target.
+// readWholeFile: open, fstat, read into a string of that size. writeTextFileAtomically: a stream into
+// replaceAtomically's temporary.
 #include "io/text_file.h"
 
 #include <fcntl.h>
@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include "io/atomic_file.h"
 
 namespace trazo {
 
@@ -115,29 +117,29 @@ bool readWholeFile(const std::string& path, std::string& contents, std::string& 
     return true;
 }
 
-bool writeTextFileAtomically(const std::string& path, const std::string& text, std::string& error) {
-    namespace fs = std::filesystem;
-    const fs::path target(path);
-    std::string hidden = target.filename().string();
-    hidden.insert(hidden.begin(), '.');  // (not "." + …: GCC 12 warns falsely on that with -O2)
-    const fs::path temporary = target.parent_path() / (hidden + ".tmp-trazo");
-    std::error_code ec;
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (!file || !(file << text) || !file.flush()) {
-            error = "cannot write '" + path + "': " + std::strerror(errno);
-            file.close();
-            fs::remove(temporary, ec);
-            return false;
-        }
-    }
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        error = "cannot write '" + path + "': " + ec.message();
-        fs::remove(temporary, ec);
-        return false;
-    }
+bool checkReadable(const std::string& path, std::string& reason) {
+    const int fd = openRegularFile(path, reason);  // never blocks: a FIFO or a device is refused unopened
+    if (fd < 0) return false;
+    ::close(fd);
     return true;
+}
+
+std::string resolveRelativePath(const std::string& namingFile, const std::string& written) {
+    const std::filesystem::path p(written);
+    if (p.is_absolute()) return p.lexically_normal().string();
+    return (std::filesystem::path(namingFile).parent_path() / p).lexically_normal().string();
+}
+
+bool writeTextFileAtomically(const std::string& path, const std::string& text, std::string& error) {
+    return replaceAtomically(
+        path,
+        [&](const std::string& temporary, std::string& why) {
+            std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+            if (file && (file << text) && file.flush()) return true;
+            why = "cannot write '" + path + "': " + std::strerror(errno);
+            return false;
+        },
+        error);
 }
 
 }  // namespace trazo

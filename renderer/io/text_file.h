@@ -1,5 +1,5 @@
-// Whole text files (host): read in one piece, and written all or nothing (a temporary beside the target,
-// then a rename, so a failure never leaves a half-written file and an existing file stays as it was).
+// Whole files (host): read in one piece (regular files only, of a bounded size), text written all or nothing
+// (replaceAtomically), and the paths one file names relative to itself.
 #pragma once
 
 #include <cstddef>
@@ -23,7 +23,15 @@ int openRegularFile(const std::string& path, std::string& reason);
 bool readWholeFile(const std::string& path, std::string& contents, std::string& reason,
                    size_t maxBytes = kMaxTextFileBytes);
 
-// False with a plain reason in `error` when the file cannot be written or replaced.
+// Opens and closes `path` to learn whether it can be read: a regular file only, checked before opening (a
+// FIFO would block the open for ever); on failure `reason` is as for openRegularFile.
+bool checkReadable(const std::string& path, std::string& reason);
+
+// `written` relative to the folder of `namingFile` (unchanged when absolute), lexically normalised.
+std::string resolveRelativePath(const std::string& namingFile, const std::string& written);
+
+// Writes `text` to `path` through replaceAtomically; false with a plain reason in `error` when the file cannot
+// be written or replaced.
 bool writeTextFileAtomically(const std::string& path, const std::string& text, std::string& error);
 
 }  // namespace trazo

@@ -1,5 +1,5 @@
 // Tests of the shared file reader: only regular files are opened (a FIFO must not block), sizes are bounded
-// before anything is allocated, and a NUL byte in a path is refused.
+// before anything is allocated, and a NUL byte in a path is refused; and of the paths a file names.
 #include "io/text_file.h"
 
 #include <fcntl.h>
@@ -95,6 +95,30 @@ TEST(TextFileTest, SizeIsBoundedBeforeReading) {
     EXPECT_EQ(reason, "file too large (1000 bytes; the limit is 999 bytes)");
     EXPECT_TRUE(readWholeFile(small, text, reason, 1000)) << reason;
     EXPECT_EQ(text.size(), 1000u);
+}
+
+TEST(TextFileTest, ASceneSizedReadReportsTheOsReason) {
+    std::string text, reason;
+    EXPECT_FALSE(readWholeFile("/nonexistent/trazo/file.scene", text, reason, kMaxSceneFileBytes));
+    EXPECT_EQ(reason, "No such file or directory");
+    EXPECT_FALSE(readWholeFile("/tmp", text, reason, kMaxSceneFileBytes));
+    EXPECT_EQ(reason, "Is a directory");
+    EXPECT_FALSE(readWholeFile("/dev/zero", text, reason, kMaxSceneFileBytes));
+    EXPECT_EQ(reason, "not a regular file (a character device)");
+}
+
+TEST(TextFileTest, CheckReadableOpensOnlyRegularFiles) {
+    std::string reason;
+    EXPECT_FALSE(checkReadable("/dev/null", reason));
+    EXPECT_EQ(reason, "not a regular file (a character device)");
+    EXPECT_TRUE(checkReadable(writeFile("readable.txt", "x"), reason)) << reason;
+}
+
+TEST(TextFileTest, RelativePathsResolveAgainstTheNamingFile) {
+    EXPECT_EQ(resolveRelativePath("scenes/a.scene", "assets/b.obj"), "scenes/assets/b.obj");
+    EXPECT_EQ(resolveRelativePath("scenes/sub/a.scene", "../c.csg"), "scenes/c.csg");
+    EXPECT_EQ(resolveRelativePath("a.scene", "b.obj"), "b.obj");
+    EXPECT_EQ(resolveRelativePath("scenes/a.scene", "/abs/b.obj"), "/abs/b.obj");
 }
 
 }  // namespace

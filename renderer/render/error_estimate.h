@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "integrator/frame_params.h"
+#include "render/accumulation.h"
 
 namespace trazo {
 

@@ -1,9 +1,9 @@
-// resolveImage(): the accumulation buffer's estimate, sum / count per pixel (linear RGB, row 0 = top).
+// resolveImage(): the image an accumulation buffer holds, AccumPixel::estimate() per pixel (linear RGB, row 0 = top).
 #pragma once
 
 #include <vector>
 
-#include "integrator/frame_params.h"
+#include "render/accumulation.h"
 
 namespace trazo {
 

@@ -1,14 +1,9 @@
 // Block lexer (host): line-based, as the thesis's reader was; braces, quotes and `#` comments anywhere.
 #include "scene/block_lexer.h"
 
-#include "io/text_file.h"
-
-#include <unistd.h>
-
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <string_view>
 #include <utility>
 
@@ -337,23 +332,6 @@ std::vector<Block> lexBlocks(const std::string& text, const std::string& file, D
         start = end + 1;
     }
     return lexer.finish();
-}
-
-bool checkReadable(const std::string& path, std::string& reason) {
-    const int fd = openRegularFile(path, reason);  // never blocks: a FIFO or a device is refused unopened
-    if (fd < 0) return false;
-    ::close(fd);
-    return true;
-}
-
-bool readTextFile(const std::string& path, std::string& contents, std::string& reason, size_t maxBytes) {
-    return readWholeFile(path, contents, reason, maxBytes);  // one read into a string of the file's size
-}
-
-std::string resolveRelativePath(const std::string& namingFile, const std::string& written) {
-    const std::filesystem::path p(written);
-    if (p.is_absolute()) return p.lexically_normal().string();
-    return (std::filesystem::path(namingFile).parent_path() / p).lexically_normal().string();
 }
 
 }  // namespace trazo

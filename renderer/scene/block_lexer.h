@@ -44,16 +44,4 @@ struct Block {
 // call stack, and a NUL byte outside a comment is an error (it would cut paths and messages short).
 std::vector<Block> lexBlocks(const std::string& text, const std::string& file, Diagnostics& diags);
 
-// Reads a whole regular file of at most `maxBytes`; on failure returns false and puts the reason in `reason`
-// (the OS reason as strerror words it, "not a regular file (a FIFO)", or "file too large (…)").
-bool readTextFile(const std::string& path, std::string& contents, std::string& reason,
-                  size_t maxBytes = kMaxSceneFileBytes);
-
-// Opens and closes `path` to learn whether it can be read: a regular file only, checked before opening (a
-// FIFO would block the open for ever); on failure `reason` is as for readTextFile.
-bool checkReadable(const std::string& path, std::string& reason);
-
-// `written` relative to the folder of `namingFile` (unchanged when absolute), lexically normalised.
-std::string resolveRelativePath(const std::string& namingFile, const std::string& written);
-
 }  // namespace trazo

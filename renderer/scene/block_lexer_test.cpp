@@ -167,21 +167,6 @@ TEST(BlockLexerTest, ClosingBraceAfterValues) {
     EXPECT_EQ(blocks[0].parameters.size(), 1u);
 }
 
-TEST(BlockLexerTest, ReadTextFileReportsTheOsReason) {
-    std::string text, reason;
-    EXPECT_FALSE(readTextFile("/nonexistent/trazo/file.scene", text, reason));
-    EXPECT_EQ(reason, "No such file or directory");
-    EXPECT_FALSE(readTextFile("/tmp", text, reason));
-    EXPECT_EQ(reason, "Is a directory");
-}
-
-TEST(BlockLexerTest, RelativePathsResolveAgainstTheNamingFile) {
-    EXPECT_EQ(resolveRelativePath("scenes/a.scene", "assets/b.obj"), "scenes/assets/b.obj");
-    EXPECT_EQ(resolveRelativePath("scenes/sub/a.scene", "../c.csg"), "scenes/c.csg");
-    EXPECT_EQ(resolveRelativePath("a.scene", "b.obj"), "b.obj");
-    EXPECT_EQ(resolveRelativePath("scenes/a.scene", "/abs/b.obj"), "/abs/b.obj");
-}
-
 }  // namespace
 }  // namespace trazo
 
@@ -265,14 +250,6 @@ TEST(BlockLexerHostileTest, NulByteIsAnErrorExceptInAComment) {
     ASSERT_EQ(blocks.size(), 1u);
     EXPECT_TRUE(blocks[0].parameters.empty());
     EXPECT_FALSE(blocks[0].complete);  // so that no "missing required parameter 'Source'" follows
-}
-
-TEST(BlockLexerHostileTest, ReadTextFileRefusesDevicesAndLargeFiles) {
-    std::string text, reason;
-    EXPECT_FALSE(readTextFile("/dev/zero", text, reason));
-    EXPECT_EQ(reason, "not a regular file (a character device)");
-    EXPECT_FALSE(checkReadable("/dev/null", reason));
-    EXPECT_EQ(reason, "not a regular file (a character device)");
 }
 
 }  // namespace

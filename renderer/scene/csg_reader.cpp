@@ -2,10 +2,12 @@
 #include "scene/csg_reader.h"
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "scene/block_lexer.h"
 #include "scene/block_table.h"
+#include "scene/source_file.h"
 
 namespace trazo {
 namespace {
@@ -220,12 +222,8 @@ std::shared_ptr<const CsgTree> readCsgText(const std::string& text, const std::s
 }
 
 std::shared_ptr<const CsgTree> readCsgFile(const std::string& path, Diagnostics& diags) {
-    std::string text, reason;
-    if (!readTextFile(path, text, reason)) {
-        diags.error({path, 0, 0}, "cannot read CSG file: " + reason);
-        return nullptr;
-    }
-    return readCsgText(text, path, diags);
+    const std::optional<std::string> text = readSourceFile(path, "CSG", kMaxSceneFileBytes, diags);
+    return text ? readCsgText(*text, path, diags) : nullptr;
 }
 
 }  // namespace trazo

@@ -20,12 +20,14 @@
 #include <cstring>
 #include <istream>
 #include <new>
+#include <optional>
 #include <streambuf>
 #include <string_view>
 #include <thread>
 #include <vector>
 
 #include "io/text_file.h"
+#include "scene/source_file.h"
 
 namespace trazo {
 namespace {
@@ -733,12 +735,8 @@ std::shared_ptr<const MeshData> readObjText(const std::string& text, const std::
 }
 
 std::shared_ptr<const MeshData> readObjFile(const std::string& path, Diagnostics& diags) {
-    std::string text, reason;
-    if (!readWholeFile(path, text, reason)) {
-        diags.error({path, 0, 0}, "cannot read OBJ file: " + reason);
-        return nullptr;
-    }
-    return readObjText(text, path, diags);
+    const std::optional<std::string> text = readSourceFile(path, "OBJ", kMaxTextFileBytes, diags);
+    return text ? readObjText(*text, path, diags) : nullptr;
 }
 
 }  // namespace trazo

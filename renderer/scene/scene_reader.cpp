@@ -4,12 +4,15 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "io/text_file.h"
 #include "scene/block_lexer.h"
 #include "scene/block_table.h"
 #include "scene/csg_reader.h"
 #include "scene/obj_reader.h"
+#include "scene/source_file.h"
 #include "scene/texture_reader.h"
 
 namespace trazo {
@@ -202,7 +205,7 @@ private:
                                               Reader reader, size_t maxBytes) {
         if (const auto it = cache.find(path); it != cache.end()) return it->second;
         std::string text, reason;
-        if (!readTextFile(path, text, reason, maxBytes)) {
+        if (!readWholeFile(path, text, reason, maxBytes)) {
             diags_.error(namedAt, "cannot read '" + path + "': " + reason);
             return nullptr;
         }
@@ -232,14 +235,11 @@ Scene readSceneText(const std::string& text, const std::string& pathForMessages,
 }
 
 Scene readSceneFile(const std::string& path, Diagnostics& diags) {
-    std::string text, reason;
-    if (!readTextFile(path, text, reason)) {
-        diags.error({path, 0, 0}, "cannot read scene file: " + reason);
-        Scene scene;
-        scene.path = path;
-        return scene;
-    }
-    return readSceneText(text, path, diags);
+    const std::optional<std::string> text = readSourceFile(path, "scene", kMaxSceneFileBytes, diags);
+    if (text) return readSceneText(*text, path, diags);
+    Scene scene;
+    scene.path = path;
+    return scene;
 }
 
 }  // namespace trazo

@@ -4,22 +4,14 @@
 #include <FreeImage.h>
 
 #include <memory>
-#include <mutex>
 #include <string>
 
+#include "io/freeimage_lock.h"
 #include "io/text_file.h"
 #include "scene/texture_header.h"
 
 namespace trazo {
 namespace {
-
-// FreeImage reports decoding problems through a process-wide callback; keep the last one for the message.
-std::mutex gFreeImageMutex;
-std::string gFreeImageMessage;
-
-void captureFreeImageMessage(FREE_IMAGE_FORMAT, const char* message) {
-    gFreeImageMessage = message ? message : "";
-}
 
 struct BitmapDeleter {
     void operator()(FIBITMAP* b) const {
@@ -80,14 +72,13 @@ std::shared_ptr<const TextureImage> readTextureImage(const std::string& path, co
         return nullptr;
     }
 
-    std::lock_guard<std::mutex> lock(gFreeImageMutex);
-    gFreeImageMessage.clear();
-    FreeImage_SetOutputMessage(captureFreeImageMessage);
+    const FreeImageLock freeImage;  // FreeImage's decoding problems come back as its message
     const std::unique_ptr<FIMEMORY, MemoryDeleter> memory(
         FreeImage_OpenMemory(reinterpret_cast<BYTE*>(bytes.data()), DWORD(bytes.size())));
     Bitmap loaded(memory ? FreeImage_LoadFromMemory(freeImageFormat(header.format), memory.get(), 0) : nullptr);
     if (!loaded) {
-        const std::string why = gFreeImageMessage.empty() ? "the image is damaged or unsupported" : gFreeImageMessage;
+        const std::string why =
+            freeImage.message().empty() ? "the image is damaged or unsupported" : freeImage.message();
         diags.error(where, "cannot decode texture '" + path + "': " + why);
         return nullptr;
     }

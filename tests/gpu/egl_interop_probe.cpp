@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "integrator/frame_params.h"  // AccumPixel
+#include "render/accumulation.h"
 
 namespace trazo {
 class CudaGlDisplay;

@@ -1,4 +1,4 @@
-// CUDA-GL interop for the viewer (host + one kernel): the estimate sum / count goes straight from the
+// CUDA-GL interop for the viewer (host + one kernel): each pixel's estimate() goes straight from the
 // accumulation buffer into the viewer's GL pixel buffer, with no copy through the host.
 #include <cuda_runtime.h>
 // After cuda_runtime.h; it includes <GL/gl.h> itself (only GLuint/GLenum are needed from it).
@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "integrator/frame_params.h"
+#include "render/accumulation.h"
 
 namespace trazo {
 
@@ -15,7 +15,7 @@ namespace {
 __global__ void resolveToRgbaKernel(const AccumPixel* accum, float4* rgba, uint32_t pixelCount) {
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= pixelCount) return;
-    const Vec3 c = accum[i].estimate();  // as resolveImage() does on the host
+    const Vec3 c = accum[i].estimate();  // the image resolveImage() makes on the host
     rgba[i] = make_float4(c.x, c.y, c.z, 1.0f);
 }
 

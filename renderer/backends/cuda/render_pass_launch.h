@@ -6,6 +6,7 @@
 #include <cuda_runtime.h>
 
 #include "integrator/sample_variants.h"
+#include "render/accumulation.h"
 
 namespace trazo {
 

@@ -1,0 +1,38 @@
+// ViewerStats: counting frames and drags, and the closing line's wording.
+#include "viewer_stats.h"
+
+#include <cstdio>
+
+namespace trazo {
+namespace {
+
+double seconds(ViewerStats::Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+}  // namespace
+
+void ViewerStats::frameShown(Clock::time_point began, Clock::time_point shown, bool image, bool fullImage,
+                             bool dragging) {
+    ++frames_;
+    if (image && firstImageSeconds_ < 0) firstImageSeconds_ = seconds(shown - start_);
+    if (fullImage && fullImageSeconds_ < 0) fullImageSeconds_ = seconds(shown - start_);
+    if (!dragging) return;
+    if (lastDragFrame_ != Clock::time_point{} && seconds(shown - lastDragFrame_) < 0.5) {
+        ++dragFrames_;
+        dragSeconds_ += seconds(shown - lastDragFrame_);
+        dragWorkSeconds_ += seconds(shown - began);
+    }
+    lastDragFrame_ = shown;
+}
+
+std::string ViewerStats::summary(Clock::time_point now) const {
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "first image after %.3f s (full size after %.3f s); %.2f s open, %llu frames drawn; while dragging "
+                  "%.1f fps (%llu frames, %.1f ms of work each); %llu batches",
+                  firstImageSeconds_, fullImageSeconds_, seconds(now - start_), (unsigned long long)frames_,
+                  dragSeconds_ > 0 ? double(dragFrames_) / dragSeconds_ : 0.0, (unsigned long long)dragFrames_,
+                  dragFrames_ ? 1e3 * dragWorkSeconds_ / double(dragFrames_) : 0.0, (unsigned long long)batches_);
+    return text;
+}
+
+}  // namespace trazo
