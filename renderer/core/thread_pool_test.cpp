@@ -69,17 +69,26 @@ TEST(ThreadPool, MaxThreadsOneRunsOnTheCallingThread) {
 
 TEST(ThreadPool, TheFirstExceptionReachesTheCallerAndThePoolStaysUsable) {
     ThreadPool pool(3);
+    // Chunk 0 throws; every other chunk waits for the throw, then takes 2 ms: running all 999 would take
+    // a second, stopping the hand-out lets only those already taken finish.
+    std::atomic<bool> thrown{false};
     std::atomic<int> after{0};
     try {
-        pool.parallelFor(100000, 7, [&](size_t begin, size_t end) {
-            if (begin <= 5000 && 5000 < end) throw std::runtime_error("chunk with 5000");
+        pool.parallelFor(1000, 1, [&](size_t begin, size_t) {
+            if (begin == 0) {
+                thrown = true;
+                throw std::runtime_error("chunk 0");
+            }
+            const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+            while (!thrown && std::chrono::steady_clock::now() < deadline) std::this_thread::yield();
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
             ++after;
         });
         ADD_FAILURE() << "no exception";
     } catch (const std::runtime_error& e) {
-        EXPECT_STREQ(e.what(), "chunk with 5000");
+        EXPECT_STREQ(e.what(), "chunk 0");
     }
-    EXPECT_LT(after.load(), 100000 / 7) << "chunks kept being handed out after the exception";
+    EXPECT_LT(after.load(), 999) << "chunks kept being handed out after the exception";
     std::atomic<size_t> sum{0};
     pool.parallelFor(1000, 3, [&](size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i) sum += i;
