@@ -307,6 +307,12 @@ TEST(BvhBuild, ExponentialSpacingStaysWithinMaxDepth) {
     }
 }
 
+void expectSameTree(const Bvh& one, const Bvh& many) {
+    ASSERT_EQ(one.nodes.size(), many.nodes.size());
+    EXPECT_EQ(0, std::memcmp(one.nodes.data(), many.nodes.data(), one.nodes.size() * sizeof(BvhNode)));
+    EXPECT_EQ(one.primitiveOrder, many.primitiveOrder);
+}
+
 TEST(BvhBuild, SameTreeWhateverTheThreadCount) {
     const std::vector<Aabb> bounds = boundsOf(randomTriangleSoup(60000, 5));
     BvhBuildOptions options;
@@ -314,10 +320,7 @@ TEST(BvhBuild, SameTreeWhateverTheThreadCount) {
     const Bvh one = buildBvh(bounds, options);
     for (unsigned threads : {2u, 3u}) {
         options.threads = threads;
-        const Bvh many = buildBvh(bounds, options);
-        ASSERT_EQ(one.nodes.size(), many.nodes.size());
-        EXPECT_EQ(0, std::memcmp(one.nodes.data(), many.nodes.data(), one.nodes.size() * sizeof(BvhNode)));
-        EXPECT_EQ(one.primitiveOrder, many.primitiveOrder);
+        expectSameTree(one, buildBvh(bounds, options));
     }
     expectValidStructure(one, bounds, 4);
 }
@@ -333,10 +336,7 @@ TEST(BvhBuild, SameTreeOnAGivenPool) {
         options.pool = &pool;
         for (unsigned threads : {0u, 2u, 5u}) {
             options.threads = threads;
-            const Bvh many = buildBvh(bounds, options);
-            ASSERT_EQ(one.nodes.size(), many.nodes.size());
-            EXPECT_EQ(0, std::memcmp(one.nodes.data(), many.nodes.data(), one.nodes.size() * sizeof(BvhNode)));
-            EXPECT_EQ(one.primitiveOrder, many.primitiveOrder);
+            expectSameTree(one, buildBvh(bounds, options));
         }
     }
 }
