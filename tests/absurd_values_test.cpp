@@ -1,7 +1,8 @@
-// Absurd but well-formed settings through the trazo binary, each under a memory limit (RLIMIT_AS in the child)
-// and a time limit: every case either renders quickly or is refused with its reason (status 2 and file:line
-// for the scene's values, status 1 and the bytes needed for an image that cannot be held), never a crash, an
-// abort or a marathon, and never an image on refusal. Issue 18's table of absurd values.
+// Absurd but well-formed settings and geometry through the trazo binary, each under a memory limit (RLIMIT_AS
+// in the child) and a time limit: every case either renders quickly, with every pixel finite and the image
+// it must give, or is refused with its reason (status 2 and file:line for the scene's values, status 1 and
+// the bytes needed for an image that cannot be held), never a crash, an abort or a marathon, and never an
+// image on refusal. Issue 18's table of absurd values.
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
@@ -11,8 +12,11 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <thread>
 #include <vector>
 
@@ -249,6 +253,249 @@ TEST(AbsurdValues, NoShippedSceneIsAnnouncedOrRefused) {
                                                 uint32_t(scene.settings.renderHeight));
         EXPECT_TRUE(note.empty()) << entry.path() << ": " << note;
     }
+}
+
+// --- Geometry from 1e-30 to 1e30: radii, scales, distances, object counts ---
+
+// A float image read back from a PFM file (rows bottom to top, as PFM stores them; only their set matters).
+struct FloatImage {
+    int width = 0, height = 0;
+    std::vector<float> rgb;
+};
+
+FloatImage readPfm(const std::string& path) {
+    FloatImage image;
+    const std::string data = readFileText(path);
+    std::istringstream header(data);
+    std::string magic;
+    double scale = 0;
+    header >> magic >> image.width >> image.height >> scale;
+    if (magic != "PF" || image.width <= 0 || image.height <= 0 || scale >= 0) return {};  // little-endian only
+    const size_t start = size_t(header.tellg()) + 1;  // one whitespace byte after the scale
+    const size_t floats = size_t(image.width) * size_t(image.height) * 3;
+    if (data.size() < start + 4 * floats) return {};
+    image.rgb.resize(floats);
+    std::memcpy(image.rgb.data(), data.data() + start, 4 * floats);
+    return image;
+}
+
+constexpr float kBackground[3] = {0.25f, 0.5f, 0.75f};  // no lit white surface gives it
+
+// A 16² view from POV `pov` towards the origin, background kBackground, material "white", `lights` then
+// `objects`.
+std::string geometryScene(const std::string& objects, const std::string& pov = "0 0 5",
+                          const std::string& lights = "PointLight\n{\n    Position 2 2 2\n}\n") {
+    return "SceneSettings\n{\n    RenderWidth 16\n    RenderHeight 16\n    BackgroundColor 0.25 0.5 0.75\n}\n"
+           "Camera\n{\n    POV " + pov + "\n}\n"
+           "Material\n{\n    Name white\n    SpecularColor 0 0 0\n}\n" + lights + objects;
+}
+
+std::string block(const std::string& name, const std::string& lines) {
+    return name + "\n{\n    Material white\n" + lines + "}\n";
+}
+
+// A 2×2 square in the plane z = 0, facing +z, as an OBJ file (no normals: they are computed).
+std::string squareObj() {
+    const std::string path = tempPath("square.obj");
+    std::ofstream(path) << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n";
+    return "    Source \"" + path + "\"\n";
+}
+
+enum class Expect { Background, Lit, Drawn, Anything };  // Lit: no pixel background, none black; Drawn: not all background
+
+struct GeometryCase {
+    std::string name;
+    std::string scene;
+    Expect expect;
+};
+
+// Renders `c` to a PFM under the limits: status 0 within 20 s, every pixel finite, and what it expects.
+void expectRenders(const GeometryCase& c, double maxSeconds = 20) {
+    const std::string scene = writeScene("geometry_" + c.name + ".scene", c.scene);
+    const std::string out = tempPath("geometry.pfm");
+    fs::remove(out);
+    const Limited r = runLimited(renderArgs(scene, out, {}), maxSeconds);
+    EXPECT_FALSE(r.timedOut) << c.name << " still running after " << r.seconds << " s";
+    EXPECT_EQ(r.signal, 0) << c.name << ": killed by signal " << r.signal << "\n" << r.errors;
+    ASSERT_EQ(r.status, 0) << c.name << "\n" << r.errors;
+    const FloatImage image = readPfm(out);
+    ASSERT_EQ(image.width * image.height, 256) << c.name << ": no 16×16 PFM";
+    int nonFinite = 0, background = 0, black = 0;
+    for (size_t i = 0; i < image.rgb.size(); i += 3) {
+        for (int k = 0; k < 3; ++k) nonFinite += !std::isfinite(image.rgb[i + size_t(k)]);
+        background += image.rgb[i] == kBackground[0] && image.rgb[i + 1] == kBackground[1] &&
+                      image.rgb[i + 2] == kBackground[2];
+        black += !(image.rgb[i] > 0.0f || image.rgb[i + 1] > 0.0f || image.rgb[i + 2] > 0.0f);
+    }
+    EXPECT_EQ(nonFinite, 0) << c.name;
+    if (c.expect == Expect::Background) EXPECT_EQ(background, 256) << c.name << ": something drawn";
+    if (c.expect == Expect::Lit) EXPECT_EQ(background + black, 0) << c.name << ": background or black pixels";
+    if (c.expect == Expect::Drawn) EXPECT_LT(background, 256) << c.name << ": nothing drawn";
+}
+
+// Objects far below a pixel are not seen; the camera inside a huge sphere, cylinder or box sees its lit inside
+// (the light is inside too; a box of 1e13 needs the inverse taken in double). 1e-50 rounds to 0 in float: a
+// radius of zero draws nothing.
+TEST(AbsurdGeometry, RadiiAndScalesFrom1eMinus30To1e19Render) {
+    std::vector<GeometryCase> cases;
+    for (const char* tiny : {"1e-30", "1e-10"}) {
+        const std::string s(tiny);
+        cases.push_back({"SphereRadius" + s, geometryScene(block("Sphere", "    Radius " + s + "\n")), Expect::Background});
+        cases.push_back({"CylinderRadius" + s,
+                         geometryScene(block("Cylinder", "    Radius " + s + "\n    Base 0 -1 0\n    Height 2\n")),
+                         Expect::Background});
+        cases.push_back({"CylinderAll" + s,
+                         geometryScene(block("Cylinder", "    Radius " + s + "\n    Height " + s + "\n")),
+                         Expect::Background});
+        cases.push_back({"BoxScale" + s, geometryScene(block("Box", "    Scale " + s + " " + s + " " + s + "\n")),
+                         Expect::Background});
+        cases.push_back({"MeshScale" + s, geometryScene(block("Mesh", squareObj() + "    Scale " + s + " " + s + " 1\n")),
+                         Expect::Background});
+    }
+    cases.push_back({"SphereRadius1e-50", geometryScene(block("Sphere", "    Radius 1e-50\n")), Expect::Background});
+    for (const char* huge : {"1e10", "1e19"}) {
+        const std::string s(huge);
+        cases.push_back({"SphereRadius" + s, geometryScene(block("Sphere", "    Radius " + s + "\n")), Expect::Lit});
+    }
+    for (const char* huge : {"1e10", "1e13"}) {
+        const std::string s(huge);
+        cases.push_back({"BoxScale" + s, geometryScene(block("Box", "    Scale " + s + " " + s + " " + s + "\n")),
+                         Expect::Lit});
+    }
+    cases.push_back({"CylinderRadius1e10",
+                     geometryScene(block("Cylinder", "    Radius 1e10\n    Base 0 -1e10 0\n    Height 2e10\n")),
+                     Expect::Lit});
+    cases.push_back({"MeshScale1e5", geometryScene(block("Mesh", squareObj() + "    Scale 1e5 1e5 1\n")), Expect::Lit});
+    for (const GeometryCase& c : cases) expectRenders(c);
+}
+
+// A unit sphere seen from 1e20 and 1e30 away is far below a pixel; so is a scene of everything far away.
+TEST(AbsurdGeometry, ACameraFarAwaySeesTheBackground) {
+    const std::string sphere = block("Sphere", "");
+    for (const char* pov : {"0 0 1e20", "0 0 1e30", "1e30 -1e30 1e30", "0 0 -1e30"})
+        expectRenders({std::string("Camera") + pov, geometryScene(sphere, pov), Expect::Background});
+    // A unit sphere 1e30 from the origin seen from 1.5 away, where float's spacing is ~1e23: the camera and
+    // the centre differ only in z, exactly, so the sphere is drawn.
+    expectRenders({"CameraNextToAFarSphere", geometryScene(block("Sphere", "    Center 1e30 0 0\n    Radius 1\n"),
+                                                           "1e30 0 1.5\n    POI 1e30 0 0"),
+                   Expect::Drawn});
+}
+
+// An area light of zero size (1e-50 rounds to 0) or below any scale lights like a point; one 1e30 wide
+// between the camera and the scene is all the camera sees.
+TEST(AbsurdGeometry, AreaLightsOfAbsurdSizesRender) {
+    const std::string sphere = block("Sphere", "");
+    for (const char* size : {"1e-30", "1e-50"}) {
+        const std::string light = std::string("AreaLight\n{\n    Position 0 0 3\n    Direction 0 0 -1\n    Width ") +
+                                  size + "\n    Height " + size + "\n}\n";
+        expectRenders({std::string("AreaLight") + size, geometryScene(sphere, "0 0 5", light), Expect::Anything});
+    }
+    expectRenders({"AreaLight1e30",
+                   geometryScene(sphere, "0 0 5",
+                                 "AreaLight\n{\n    Position 0 0 3\n    Direction 0 0 -1\n    Width 1e30\n    Height 1e30\n}\n"),
+                   Expect::Lit});
+}
+
+// 10⁴ spheres, and 10⁴ boxes, on a 100×100 grid filling the view: read, built and rendered in seconds.
+TEST(AbsurdGeometry, TenThousandObjectsRenderQuickly) {
+    for (const char* kind : {"Sphere", "Box"}) {
+        std::string objects;
+        for (int i = 0; i < 100; ++i)
+            for (int j = 0; j < 100; ++j) {
+                const std::string x = std::to_string(-1.0 + 0.02 * i), y = std::to_string(-1.0 + 0.02 * j);
+                objects += std::string(kind) == "Sphere"
+                               ? block("Sphere", "    Center " + x + " " + y + " 0\n    Radius 0.012\n")
+                               : block("Box", "    Scale 0.012 0.012 0.012\n    Translation " + x + " " + y + " 0\n");
+            }
+        const auto t0 = std::chrono::steady_clock::now();
+        expectRenders({std::string("TenThousand") + kind, geometryScene(objects, "0 0 2.5"), Expect::Drawn});
+        EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0) << kind;
+    }
+}
+
+// Scales that are each non-zero as written but compose to a map float cannot hold or invert (1e-50 rounds to
+// 0; two 1e-30 scales make 1e-60; two 1e30 scales overflow) are refused at the block's line.
+TEST(AbsurdGeometry, TransformsThatFloatCannotInvertAreRefusedWithTheirLine) {
+    const GeometryCase cases[] = {
+        {"BoxScaleRoundsToZero", geometryScene(block("Box", "    Scale 1e-50 1 1\n")), Expect::Anything},
+        {"BoxScalesMultiplyToZero",
+         geometryScene(block("Box", "    Scale 1e-30 1e-30 1e-30\n    Scale 1e-30 1e-30 1e-30\n")), Expect::Anything},
+        {"MeshScalesOverflow", geometryScene(block("Mesh", squareObj() + "    Scale 1e30 1 1\n    Scale 1e30 1 1\n")),
+         Expect::Anything},
+    };
+    for (const GeometryCase& c : cases) {
+        const std::string scene = writeScene("refused_" + c.name + ".scene", c.scene);
+        const std::string out = tempPath("refused.pfm");
+        fs::remove(out);
+        const Limited r = runLimited(renderArgs(scene, out, {}), 20);
+        EXPECT_EQ(r.signal, 0) << c.name << "\n" << r.errors;
+        EXPECT_EQ(r.status, 2) << c.name << "\n" << r.errors;
+        EXPECT_NE(r.errors.find("refused_" + c.name + ".scene:"), std::string::npos) << r.errors;
+        EXPECT_NE(r.errors.find("transforms compose to a map single precision cannot hold or invert"),
+                  std::string::npos) << r.errors;
+        EXPECT_FALSE(fs::exists(out)) << c.name;
+    }
+}
+
+// Open findings: each fix lies in code being refactored elsewhere, so it waits as a patch under
+// /work/fuzzlogs/ (named in the skip); the cases below are what the patch must make pass.
+TEST(AbsurdGeometry, PendingHugeRadii) {
+    GTEST_SKIP() << "radius² overflows float in intersectSphere/intersectCylinder: "
+                    "/work/fuzzlogs/absurd-sphere-radius-1e20.patch, /work/fuzzlogs/absurd-cylinder-radius-1e20.patch";
+    for (const char* huge : {"1e20", "1e30"}) {
+        const std::string s(huge);
+        expectRenders({"SphereRadius" + s, geometryScene(block("Sphere", "    Radius " + s + "\n")), Expect::Lit});
+        expectRenders({"CylinderRadius" + s,
+                       geometryScene(block("Cylinder", "    Radius " + s + "\n    Base 0 -" + s + " 0\n    Height " + s + "\n")),
+                       Expect::Lit});
+    }
+}
+
+TEST(AbsurdGeometry, PendingHugeBox) {
+    GTEST_SKIP() << "the box normal normalize(row) underflows for scales beyond ~1e19 (geometry/intersect_box.h): "
+                    "/work/fuzzlogs/absurd-box-scale-1e30.patch";
+    for (const char* huge : {"1e20", "1e30"}) {
+        const std::string s(huge);
+        expectRenders({"BoxScale" + s, geometryScene(block("Box", "    Scale " + s + " " + s + " " + s + "\n")), Expect::Lit});
+    }
+}
+
+TEST(AbsurdGeometry, PendingHugeMesh) {
+    GTEST_SKIP() << "computed normals overflow in normalizeOr (device/flatten_mesh.cpp): "
+                    "/work/fuzzlogs/absurd-mesh-scale-1e10.patch";
+    for (const char* huge : {"1e10", "1e30"})
+        expectRenders({std::string("MeshScale") + huge,
+                       geometryScene(block("Mesh", squareObj() + "    Scale " + huge + " " + huge + " 1\n")), Expect::Lit});
+}
+
+TEST(AbsurdGeometry, PendingLightFarAway) {
+    GTEST_SKIP() << "length(x − p) overflows in shadeFromPoint (integrator/direct_light.h): "
+                    "/work/fuzzlogs/absurd-light-1e30.patch";
+    // The front of the unit sphere, seen from +z and lit from +z (no falloff: SPEC §5), is lit at the centre.
+    for (const char* light : {"PointLight\n{\n    Position 0 0 1e30\n}\n",
+                              "AreaLight\n{\n    Position 0 0 1e30\n    Direction 0 0 -1\n}\n"}) {
+        const std::string scene = writeScene("far_light.scene", geometryScene(block("Sphere", ""), "0 0 5", light));
+        const std::string out = tempPath("far_light.pfm");
+        const Limited r = runLimited(renderArgs(scene, out, {}), 20);
+        ASSERT_EQ(r.status, 0) << r.errors;
+        const FloatImage image = readPfm(out);
+        ASSERT_EQ(image.rgb.size(), 768u);
+        EXPECT_GT(image.rgb[3 * (8 * 16 + 8)], 0.5f) << light;
+    }
+}
+
+TEST(AbsurdGeometry, PendingColoursNearFloatsMaximum) {
+    GTEST_SKIP() << "a sample's sums overflow to inf; the fix is a reader bound in block_table.cpp: "
+                    "/work/fuzzlogs/absurd-huge-colour.patch";
+    const std::string scene = writeScene(
+        "huge_colour.scene", "SceneSettings\n{\n    RenderWidth 16\n    RenderHeight 16\n    Antialiasing 16\n"
+                             "    BackgroundColor 3e38 3e38 3e38\n}\nSphere\n{\n}\nPointLight\n{\n}\n");
+    const std::string out = tempPath("huge_colour.pfm");
+    fs::remove(out);
+    const Limited r = runLimited(renderArgs(scene, out, {}), 20);
+    EXPECT_EQ(r.status, 2) << r.errors;
+    EXPECT_NE(r.errors.find("huge_colour.scene:5:"), std::string::npos) << r.errors;
+    EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace

@@ -1,14 +1,14 @@
 // Binned-SAH BVH builder (host). The top of the tree is split level by level, a level's nodes on several
 // threads (or, while a level has fewer nodes than threads, each node's binning spread over them); the
-// subtrees below a fixed size become tasks built on a thread pool into their own arrays, concatenated at
-// the end in task order, so the layout does not depend on the thread count.
+// subtrees below a fixed size become tasks built on the pool's threads into their own arrays, concatenated
+// at the end in task order, so the layout does not depend on the thread count.
 #include "accel/bvh_build.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cassert>
 #include <functional>
-#include <thread>
+
+#include "core/thread_pool.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -126,8 +126,8 @@ struct Split {
 
 class Builder {
 public:
-    Builder(std::vector<PrimRef>& refs, const BvhBuildOptions& options, unsigned threads)
-        : refs_(refs), options_(options), threads_(threads) {
+    Builder(std::vector<PrimRef>& refs, const BvhBuildOptions& options, ThreadPool& pool, unsigned threads)
+        : refs_(refs), options_(options), pool_(pool), threads_(threads) {
         // Independent of the thread count, so the layout is too; ~64-128 tasks balance well up to 16+ threads.
         taskThreshold_ = std::max<uint32_t>(4096, (uint32_t)(refs.size() / 64));
     }
@@ -170,14 +170,8 @@ public:
             if (big.size() < threads_) {
                 for (size_t i = 0; i < big.size(); ++i) splits[i] = splitTop(big[i].first, true);
             } else {
-                std::atomic<size_t> nextIndex{0};
-                auto work = [&] {
-                    for (size_t i; (i = nextIndex.fetch_add(1)) < big.size();) splits[i] = splitTop(big[i].first, false);
-                };
-                std::vector<std::thread> pool;
-                for (unsigned t = 1; t < threads_; ++t) pool.emplace_back(work);
-                work();
-                for (std::thread& t : pool) t.join();
+                pool_.parallelFor(
+                    big.size(), 1, [&](size_t i, size_t) { splits[i] = splitTop(big[i].first, false); }, threads_);
             }
             next.clear();
             for (size_t i = 0; i < big.size(); ++i) {
@@ -240,15 +234,15 @@ private:
             return;
         }
         std::vector<BinSet> partial(parts, BinSet(m.binCount));
-        std::vector<std::thread> workers;
         const uint32_t chunk = (r.count() + parts - 1) / parts;
-        for (unsigned p = 0; p < parts; ++p) {
-            const uint32_t b = r.begin + std::min(r.count(), p * chunk), e = r.begin + std::min(r.count(), (p + 1) * chunk);
-            auto work = [&, p, b, e] { binPrimitives(refs_.data() + b, e - b, m, partial[p]); };
-            if (p + 1 < parts) workers.emplace_back(work);
-            else work();
-        }
-        for (std::thread& t : workers) t.join();
+        pool_.parallelFor(
+            parts, 1,
+            [&](size_t p, size_t) {
+                const uint32_t b = r.begin + std::min<uint32_t>(r.count(), uint32_t(p) * chunk);
+                const uint32_t e = r.begin + std::min<uint32_t>(r.count(), uint32_t(p + 1) * chunk);
+                binPrimitives(refs_.data() + b, e - b, m, partial[p]);
+            },
+            threads_);
         // Min/max and integer sums: the merged bins are exact whatever the chunking.
         for (const BinSet& s : partial)
             for (int a = 0; a < 3; ++a)
@@ -460,7 +454,8 @@ private:
 
     std::vector<PrimRef>& refs_;
     const BvhBuildOptions& options_;
-    unsigned threads_;
+    ThreadPool& pool_;
+    unsigned threads_;  // how many threads may work at once; the work's split depends on it, never the tree
     uint32_t taskThreshold_;
 };
 
@@ -476,7 +471,8 @@ Bvh buildBvh(uint32_t n, const std::function<Aabb(uint32_t)>& boundsOf, const Bv
     BvhBuildOptions options = optionsIn;
     options.maxLeafSize = std::max(1u, options.maxLeafSize);
     options.binCount = std::clamp(options.binCount, 2u, kMaxBvhBins);
-    const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+    ThreadPool& pool = options.pool ? *options.pool : sharedThreadPool();
+    const unsigned threads = options.threads ? options.threads : pool.threadCount();
 
     // The references, in chunks over the threads; the root's boxes are merged from the chunks' (exact:
     // min and max).
@@ -486,9 +482,9 @@ Bvh buildBvh(uint32_t n, const std::function<Aabb(uint32_t)>& boundsOf, const Bv
     {
         const unsigned parts = n >= 65536 ? threads : 1;
         std::vector<Range> partial(parts);
-        auto fill = [&](unsigned p) {
+        auto fill = [&](size_t p, size_t) {
             const uint32_t chunk = (n + parts - 1) / parts;
-            const uint32_t b = std::min(n, p * chunk), e = std::min(n, (p + 1) * chunk);
+            const uint32_t b = std::min<uint32_t>(n, uint32_t(p) * chunk), e = std::min<uint32_t>(n, uint32_t(p + 1) * chunk);
             Range& part = partial[p];
             for (uint32_t i = b; i < e; ++i) {
                 const Aabb box = boundsOf(i);
@@ -498,17 +494,14 @@ Bvh buildBvh(uint32_t n, const std::function<Aabb(uint32_t)>& boundsOf, const Bv
                 growBox(part.centroids, c, c);
             }
         };
-        std::vector<std::thread> pool;
-        for (unsigned p = 1; p < parts; ++p) pool.emplace_back(fill, p);
-        fill(0);
-        for (std::thread& t : pool) t.join();
+        pool.parallelFor(parts, 1, fill, threads);
         for (const Range& part : partial) {
             growBox(root.bounds, part.bounds);
             growBox(root.centroids, part.centroids);
         }
     }
 
-    Builder builder(refs, options, threads);
+    Builder builder(refs, options, pool, threads);
     std::vector<BvhNode> top(1);
     std::vector<Range> tasks;
     std::vector<uint32_t> taskSlots;
@@ -526,17 +519,9 @@ Bvh buildBvh(uint32_t n, const std::function<Aabb(uint32_t)>& boundsOf, const Bv
         subtrees[t].reserve(2 * tasks[t].count());
         subtrees[t].resize(1);
     }
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-        for (size_t k; (k = next.fetch_add(1)) < schedule.size();) {
-            const uint32_t t = schedule[k];
-            builder.buildSubtree(subtrees[t], 0, tasks[t]);
-        }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned i = 1; i < std::min<size_t>(threads, tasks.size()); ++i) pool.emplace_back(worker);
-    worker();
-    for (std::thread& t : pool) t.join();
+    pool.parallelFor(
+        schedule.size(), 1, [&](size_t k, size_t) { builder.buildSubtree(subtrees[schedule[k]], 0, tasks[schedule[k]]); },
+        threads);
 
     // Subtree t's local node k ≥ 1 lands at base + k − 1; its root (local 0) replaces its slot in `top`.
     size_t total = top.size();

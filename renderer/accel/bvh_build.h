@@ -10,10 +10,13 @@
 
 namespace trazo {
 
+class ThreadPool;
+
 struct BvhBuildOptions {
     uint32_t maxLeafSize = 4;  // a hard cap: a larger node is always split
     uint32_t binCount = 16;    // centroid bins per axis, 2..kMaxBvhBins
-    unsigned threads = 0;      // 0 = all cores
+    unsigned threads = 0;      // at most this many threads at once; 0 = all of the pool's
+    ThreadPool* pool = nullptr;  // the threads to build on; null = sharedThreadPool() (core/thread_pool.h)
     // SAH: cost(node) = traversalCost + intersectionCost · Σ A(child)/A(node) · count(child); leaf = intersectionCost · count.
     float traversalCost = 1.0f;
     float intersectionCost = 1.0f;

@@ -13,6 +13,7 @@
 #include "accel/bvh_traverse.h"
 #include "accel/collapse_bvh.h"
 #include "core/counter_uniform.h"
+#include "core/thread_pool.h"
 #include "geometry/intersect_triangle_leaf.h"
 #include "geometry/tessellate.h"
 
@@ -306,6 +307,12 @@ TEST(BvhBuild, ExponentialSpacingStaysWithinMaxDepth) {
     }
 }
 
+void expectSameTree(const Bvh& one, const Bvh& many) {
+    ASSERT_EQ(one.nodes.size(), many.nodes.size());
+    EXPECT_EQ(0, std::memcmp(one.nodes.data(), many.nodes.data(), one.nodes.size() * sizeof(BvhNode)));
+    EXPECT_EQ(one.primitiveOrder, many.primitiveOrder);
+}
+
 TEST(BvhBuild, SameTreeWhateverTheThreadCount) {
     const std::vector<Aabb> bounds = boundsOf(randomTriangleSoup(60000, 5));
     BvhBuildOptions options;
@@ -313,12 +320,25 @@ TEST(BvhBuild, SameTreeWhateverTheThreadCount) {
     const Bvh one = buildBvh(bounds, options);
     for (unsigned threads : {2u, 3u}) {
         options.threads = threads;
-        const Bvh many = buildBvh(bounds, options);
-        ASSERT_EQ(one.nodes.size(), many.nodes.size());
-        EXPECT_EQ(0, std::memcmp(one.nodes.data(), many.nodes.data(), one.nodes.size() * sizeof(BvhNode)));
-        EXPECT_EQ(one.primitiveOrder, many.primitiveOrder);
+        expectSameTree(one, buildBvh(bounds, options));
     }
     expectValidStructure(one, bounds, 4);
+}
+
+// On a pool of its own, of any size, at any thread cap: the same tree as on one thread.
+TEST(BvhBuild, SameTreeOnAGivenPool) {
+    const std::vector<Aabb> bounds = boundsOf(randomTriangleSoup(70000, 6));
+    BvhBuildOptions options;
+    options.threads = 1;
+    const Bvh one = buildBvh(bounds, options);
+    for (unsigned poolThreads : {1u, 3u}) {
+        ThreadPool pool(poolThreads);
+        options.pool = &pool;
+        for (unsigned threads : {0u, 2u, 5u}) {
+            options.threads = threads;
+            expectSameTree(one, buildBvh(bounds, options));
+        }
+    }
 }
 
 // Nearest hits agree with testing every triangle (bitwise distance; the same triangle unless two tie), and

@@ -33,12 +33,37 @@ TRAZO_HD Affine3 then(const Affine3& first, const Affine3& other) {
 
 TRAZO_HD float determinant(const Affine3& a) { return dot(a.row[0], cross(a.row[1], a.row[2])); }
 
-// Inverse of an affine map; the caller guarantees it is not singular (the readers reject zero scales).
+// The inverse in double precision: cofactors and determinant of a map scaled by s are s² and s³, which
+// leave float's range for |s| beyond about 1e12 or below 1e-12 while the inverse itself (1/s) is fine.
+TRAZO_HD Affine3 inverseInDouble(const Affine3& a) {
+    double m[3][3], inv[3][3];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) m[i][j] = a.row[i][j];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {  // inv[j][i] = cofactor (i, j)
+            const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            inv[j][i] = m[i1][j1] * m[i2][j2] - m[i1][j2] * m[i2][j1];
+        }
+    const double invDet = 1.0 / (m[0][0] * inv[0][0] + m[0][1] * inv[1][0] + m[0][2] * inv[2][0]);
+    Affine3 r;
+    for (int i = 0; i < 3; ++i) r.row[i] = Vec3(float(inv[i][0] * invDet), float(inv[i][1] * invDet), float(inv[i][2] * invDet));
+    for (int i = 0; i < 3; ++i)
+        r.translation[i] = float(-(inv[i][0] * a.translation.x + inv[i][1] * a.translation.y + inv[i][2] * a.translation.z) * invDet);
+    return r;
+}
+
+// Inverse of an affine map; the caller guarantees it is not singular (the scene reader refuses transforms
+// whose inverse is not finite). In float where float holds every intermediate, otherwise in double.
 TRAZO_HD Affine3 inverse(const Affine3& a) {
     const Vec3 c0 = cross(a.row[1], a.row[2]);
     const Vec3 c1 = cross(a.row[2], a.row[0]);
     const Vec3 c2 = cross(a.row[0], a.row[1]);
-    const float invDet = 1.0f / dot(a.row[0], c0);
+    const float det = dot(a.row[0], c0);
+    // A determinant or cofactor that overflowed, or lost its precision below float's normal range, would
+    // make the float inverse 0, inf or NaN.
+    const float largest = fmaxf(fmaxf(maxComponent(abs(c0)), maxComponent(abs(c1))), maxComponent(abs(c2)));
+    if (!(fabsf(det) >= 1.17549435e-38f && fabsf(det) < 3.0e38f && largest < 3.0e38f)) return inverseInDouble(a);
+    const float invDet = 1.0f / det;
     Affine3 r;
     // The inverse's columns are the cofactor rows; transpose them into rows.
     r.row[0] = Vec3(c0.x, c1.x, c2.x) * invDet;

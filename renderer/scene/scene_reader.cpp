@@ -69,6 +69,7 @@ private:
             scene_.spheres.push_back(readObject(block, index, sphereTable()).object);
         } else if (id == "Box") {
             scene_.boxes.push_back(readObject(block, index, boxTable()).object);
+            checkInvertible(scene_.boxes.back().transforms, block);
         } else if (id == "Cylinder") {
             scene_.cylinders.push_back(readObject(block, index, cylinderTable()).object);
         } else if (id == "CSG") {
@@ -169,9 +170,24 @@ private:
         return d;
     }
 
+    // Each Scale is non-zero as written, but a value below 1e-45 rounds to 0 in float and scales multiply:
+    // a composed map that float cannot invert (or hold) would reach the renderer as NaN.
+    void checkInvertible(const std::vector<TransformStep>& steps, const Block& block) {
+        if (steps.empty()) return;
+        const Affine3 m = composeTransforms(steps);
+        const Affine3 inv = inverse(m);
+        bool finite = isFinite(m.translation) && isFinite(inv.translation);
+        for (int i = 0; i < 3; ++i) finite = finite && isFinite(m.row[i]) && isFinite(inv.row[i]);
+        if (!finite) {
+            diags_.error(block.where, block.identifier + ": its transforms compose to a map single precision "
+                                      "cannot hold or invert (scales multiply past float's range, about 1e±38)");
+        }
+    }
+
     void readMesh(const Block& block, size_t index) {
         ObjectDraft<Mesh> d = readObject(block, index, meshTable());
         Mesh& mesh = d.object;
+        checkInvertible(mesh.transforms, block);
         if (!mesh.source.empty()) {
             mesh.source = resolveRelativePath(file_, mesh.source);
             mesh.data = loadNamedFile(mesh.source, d.sourceAt, meshes_, readObjText, kMaxTextFileBytes);
@@ -190,6 +206,7 @@ private:
     void readCsg(const Block& block, size_t index) {
         ObjectDraft<Csg> d = readObject(block, index, csgTable());
         Csg& csg = d.object;
+        checkInvertible(csg.transforms, block);
         if (!csg.source.empty()) {
             csg.source = resolveRelativePath(file_, csg.source);
             csg.tree = loadNamedFile(csg.source, d.sourceAt, csgTrees_, readCsgText, kMaxSceneFileBytes);

@@ -1,13 +1,12 @@
-// CPU backend: every pass runs renderSample over the image in 16×16 tiles on a pool of threads (ray queries:
-// chunks of rays on the same threads).
+// CPU backend: every pass runs renderSample over the image in 16×16 tiles on the backend's thread pool (ray
+// queries: chunks of rays on the same threads).
 // Each pixel's sum depends only on (pixel, passes), never on which thread ran it.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <functional>
-#include <thread>
 
 #include "backends/backend.h"
+#include "core/thread_pool.h"
 #include "integrator/sample_variants.h"
 
 namespace trazo {
@@ -46,11 +45,10 @@ constexpr auto kTileVariants = makeVariantTable<TileVariant>();
 
 class CpuBackend final : public Backend {
 public:
-    explicit CpuBackend(unsigned threads)
-        : threads_(threads ? threads : std::max(1u, std::thread::hardware_concurrency())) {}
+    explicit CpuBackend(unsigned threads) : pool_(threads) {}
 
     std::string name() const override { return "cpu"; }
-    std::string deviceName() const override { return std::to_string(threads_) + " CPU threads"; }
+    std::string deviceName() const override { return std::to_string(pool_.threadCount()) + " CPU threads"; }
 
     void upload(const SceneArrays& arrays) override {
         arrays_ = arrays;
@@ -75,19 +73,13 @@ public:
         const uint32_t tilesX = (width_ + kTileSize - 1) / kTileSize;
         const uint32_t tilesY = (height_ + kTileSize - 1) / kTileSize;
         const uint32_t tileCount = tilesX * tilesY;
-        std::atomic<uint32_t> nextTile{0};
         std::atomic<uint64_t> rays{0};
         const auto renderTile = kTileVariants[sampleVariantFor(view_.features)];
-        auto worker = [&] {
-            uint64_t localRays = 0;
-            for (uint32_t tile; (tile = nextTile.fetch_add(1)) < tileCount;) {
-                const uint32_t x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
-                const Tile t{x0, y0, std::min(x0 + kTileSize, width_), std::min(y0 + kTileSize, height_)};
-                localRays += renderTile(view_, frame, t, firstPass, passCount, accum_.data());
-            }
-            rays += localRays;
-        };
-        runOnAllThreads(worker);
+        pool_.parallelFor(tileCount, 1, [&](size_t tile, size_t) {
+            const uint32_t x0 = (uint32_t(tile) % tilesX) * kTileSize, y0 = (uint32_t(tile) / tilesX) * kTileSize;
+            const Tile t{x0, y0, std::min(x0 + kTileSize, width_), std::min(y0 + kTileSize, height_)};
+            rays.fetch_add(renderTile(view_, frame, t, firstPass, passCount, accum_.data()), std::memory_order_relaxed);
+        });
         rays_ += rays.load();
     }
 
@@ -97,28 +89,15 @@ public:
     double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) override {
         out.resize(queries.size());
         constexpr size_t kChunk = 4096;
-        std::atomic<size_t> nextChunk{0};
-        auto worker = [&] {
-            for (size_t begin; (begin = nextChunk.fetch_add(kChunk)) < queries.size();)
-                for (size_t i = begin; i < std::min(queries.size(), begin + kChunk); ++i)
-                    out[i] = answerRayQuery(view_, queries[i], shadow);
-        };
         const auto start = std::chrono::steady_clock::now();
-        runOnAllThreads(worker);
+        pool_.parallelFor(queries.size(), kChunk, [&](size_t begin, size_t end) {
+            for (size_t i = begin; i < end; ++i) out[i] = answerRayQuery(view_, queries[i], shadow);
+        });
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 
 private:
-    // Runs `worker` on threads_ threads (this one included) and waits for all of them.
-    template <class Worker>
-    void runOnAllThreads(Worker& worker) const {
-        std::vector<std::thread> pool;
-        for (unsigned i = 1; i < threads_; ++i) pool.emplace_back(std::ref(worker));
-        worker();
-        for (auto& t : pool) t.join();
-    }
-
-    unsigned threads_;
+    ThreadPool pool_;  // started with the backend, for every pass it renders
     SceneArrays arrays_;
     SceneView view_{};
     uint32_t width_ = 0, height_ = 0;
