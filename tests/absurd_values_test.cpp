@@ -171,8 +171,9 @@ TEST(AbsurdValues, ValuesInsideTheBoundsRenderQuickly) {
         EXPECT_FALSE(r.timedOut) << c.name << " still running after " << r.seconds << " s";
         EXPECT_EQ(r.status, 0) << c.name << "\n" << r.errors;
         EXPECT_TRUE(fs::exists(out)) << c.name;
-        if (std::string(c.name).rfind("Antialiasing", 0) == 0 && std::string(c.name) != "Antialiasing16")
+        if (std::string(c.name).rfind("Antialiasing", 0) == 0 && std::string(c.name) != "Antialiasing16") {
             EXPECT_NE(r.errors.find("must be 1, 4 or 16"), std::string::npos) << r.errors;
+        }
     }
 }
 

@@ -240,7 +240,9 @@ TEST_P(CudaAgreementRule, CalibratedOnTheCpu) {
     std::printf("[ sensitivity ] %s: %zu undecided pixels, %.1f new flips per nudge, nudge RMSE %.3g\n",
                 GetParam().scene, s.undecidedCount, s.newFlips, s.nudgeRmse);
     EXPECT_GT(s.nudgeRmse, 0.0) << "a nudge that changes nothing measures nothing";
-    if (GetParam().hasTies) EXPECT_GT(s.undecidedCount, 0u) << "the nudges missed the scene's ties";
+    if (GetParam().hasTies) {
+        EXPECT_GT(s.undecidedCount, 0u) << "the nudges missed the scene's ties";
+    }
 
     EXPECT_TRUE(agreesWithin(cpu, renderNudged(path, kThirdNudge), s, 1.0)) << "a third nudge";
 

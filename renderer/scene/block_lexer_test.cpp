@@ -189,12 +189,6 @@ TEST(BlockLexerTest, RelativePathsResolveAgainstTheNamingFile) {
 namespace trazo {
 namespace {
 
-size_t countErrors(const Diagnostics& d) {
-    size_t n = 0;
-    for (const Diagnostic& x : d.items) n += x.severity == Severity::Error;
-    return n;
-}
-
 // 100 000 '{' lines used to be read as 100 000 unterminated blocks (and the same on one line recursed once a
 // brace): now the report stops after kMaxLexerErrors, saying so at the line where it stopped.
 TEST(BlockLexerHostileTest, HundredThousandNestedBracesGiveABoundedReport) {
