@@ -25,14 +25,14 @@ std::string writeFile(const std::string& name, const std::string& text) {
     return path;
 }
 
-TEST(TextFileTest, ReadsARegularFileWhole) {
+TEST(TextFile, ReadsARegularFileWhole) {
     const std::string path = writeFile("whole.txt", std::string("a\0b\nc", 5));
     std::string text, reason;
     ASSERT_TRUE(readWholeFile(path, text, reason)) << reason;
     EXPECT_EQ(text, std::string("a\0b\nc", 5));
 }
 
-TEST(TextFileTest, RefusesWhatIsNotARegularFile) {
+TEST(TextFile, RefusesWhatIsNotARegularFile) {
     std::string text, reason;
     EXPECT_FALSE(readWholeFile("/nonexistent/trazo/x", text, reason));
     EXPECT_EQ(reason, "No such file or directory");
@@ -46,7 +46,7 @@ TEST(TextFileTest, RefusesWhatIsNotARegularFile) {
 
 // A FIFO with no writer blocks an ordinary open for ever: the reader must refuse it without opening it. Run on
 // a thread with a deadline; should it block, opening the write end releases it and the test fails.
-TEST(TextFileTest, RefusesAFifoWithoutBlocking) {
+TEST(TextFile, RefusesAFifoWithoutBlocking) {
     const std::string fifo = test::tempPath("text_file.fifo");
     std::filesystem::remove(fifo);
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
@@ -72,7 +72,7 @@ TEST(TextFileTest, RefusesAFifoWithoutBlocking) {
     std::filesystem::remove(fifo);
 }
 
-TEST(TextFileTest, NulInAPathIsRefused) {
+TEST(TextFile, NulInAPathIsRefused) {
     const std::string path = writeFile("nul", "x");
     std::string text, reason;
     EXPECT_FALSE(readWholeFile(path + std::string("\0.obj", 5), text, reason));  // would open `path`
@@ -81,7 +81,7 @@ TEST(TextFileTest, NulInAPathIsRefused) {
 
 // The size is checked before any allocation: a sparse file that claims 2^31 + 1 bytes costs nothing to make
 // and is refused at once; a file one byte over a limit is refused, one at the limit is read.
-TEST(TextFileTest, SizeIsBoundedBeforeReading) {
+TEST(TextFile, SizeIsBoundedBeforeReading) {
     const std::string sparse = writeFile("sparse.obj", "");
     ASSERT_EQ(::truncate(sparse.c_str(), (off_t(1) << 31) + 1), 0);
     std::string text, reason;

@@ -137,19 +137,19 @@ void expectTablesMatch(const std::string& specPath) {
     }
 }
 
-TEST(BlockTableTest, MatchesTheSpecCopyInDocs) { expectTablesMatch(kDocsSpec); }
+TEST(BlockTable, MatchesTheSpecCopyInDocs) { expectTablesMatch(kDocsSpec); }
 
-TEST(BlockTableTest, MatchesTheSharedSpec) {
+TEST(BlockTable, MatchesTheSharedSpec) {
     if (!std::filesystem::exists(kSharedSpec)) GTEST_SKIP() << kSharedSpec << " is absent (a fresh clone)";
     expectTablesMatch(kSharedSpec);
 }
 
-TEST(BlockTableTest, DocsCopyOfTheSpecIsCurrent) {
+TEST(BlockTable, DocsCopyOfTheSpecIsCurrent) {
     if (!std::filesystem::exists(kSharedSpec)) GTEST_SKIP() << kSharedSpec << " is absent (a fresh clone)";
     EXPECT_EQ(readAll(kDocsSpec), readAll(kSharedSpec)) << "copy ../shared/SPEC.md to docs/SPEC.md";
 }
 
-TEST(BlockTableTest, SpecParserReadsTheExpectedShapes) {
+TEST(BlockTable, SpecParserReadsTheExpectedShapes) {
     // Guards the test's own parser: a few facts read by eye from SPEC §3.
     const auto blocks = specBlocks(section(readAll(kDocsSpec), "## 3. Blocks", "## 4."));
     ASSERT_TRUE(blocks.count("AreaLight"));
@@ -161,7 +161,7 @@ TEST(BlockTableTest, SpecParserReadsTheExpectedShapes) {
     EXPECT_EQ(blocks.at("Material").size(), 13u);
 }
 
-TEST(BlockTableTest, EveryTableNameIsUniqueAndDocumented) {
+TEST(BlockTable, EveryTableNameIsUniqueAndDocumented) {
     for (const auto* set : {&sceneBlocks(), &csgBlocks()}) {
         for (const BlockInfo& b : *set) {
             std::set<std::string_view> names;
@@ -174,7 +174,7 @@ TEST(BlockTableTest, EveryTableNameIsUniqueAndDocumented) {
     }
 }
 
-TEST(BlockTableTest, DidYouMeanPicksTheClosestName) {
+TEST(BlockTable, DidYouMeanPicksTheClosestName) {
     const std::vector<std::string_view> names = {"Center", "Radius", "Material"};
     EXPECT_EQ(didYouMean("Radus", names), "did you mean 'Radius'?");
     EXPECT_EQ(didYouMean("radius", names), "did you mean 'Radius'?");
@@ -183,7 +183,7 @@ TEST(BlockTableTest, DidYouMeanPicksTheClosestName) {
     EXPECT_EQ(didYouMean("Spher", blockNames(sceneBlocks())), "did you mean 'Sphere'?");
 }
 
-TEST(BlockTableTest, TwoWordSynonyms) {
+TEST(BlockTable, TwoWordSynonyms) {
     EXPECT_EQ(twoWordSynonym("Roll", "Angle"), "RollAngle");
     EXPECT_EQ(twoWordSynonym("Reflection", "Angle"), "ReflectionAngle");
     EXPECT_EQ(twoWordSynonym("Reflection", "Amount"), "ReflectionAmount");
