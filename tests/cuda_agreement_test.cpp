@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "backends/backend.h"
+#include "fetched_assets.h"
 #include "render_harness.h"
 #include "scene/scene.h"
 #include "test_paths.h"
@@ -198,7 +199,12 @@ TEST(CudaAgreementScenes, ShippedScenesAreAllListed) {
     EXPECT_EQ(scenesInDirectory(), sorted) << "every scene in scenes/ must be in kShippedScenes";
 }
 
-class CudaAgreement : public ::testing::TestWithParam<const char*> {};
+class CudaAgreement : public ::testing::TestWithParam<const char*> {
+    void SetUp() override {
+        const std::string why = absentFetchedAsset(sourcePath(std::string("scenes/") + GetParam()));
+        if (!why.empty()) GTEST_SKIP() << why;
+    }
+};
 
 TEST_P(CudaAgreement, SameImageAsCpu) {
     std::string device;

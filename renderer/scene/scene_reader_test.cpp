@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "fetched_assets.h"
 #include "scene/csg_reader.h"
 #include "test_paths.h"
 
@@ -613,7 +614,12 @@ std::vector<std::string> sceneFolderFiles() {
     return names;
 }
 
-class SceneReaderSeed : public ::testing::TestWithParam<std::string> {};
+class SceneReaderSeed : public ::testing::TestWithParam<std::string> {
+    void SetUp() override {
+        const std::string why = test::absentFetchedAsset(test::sourcePath("scenes/" + GetParam()));
+        if (!why.empty()) GTEST_SKIP() << why;
+    }
+};
 
 TEST_P(SceneReaderSeed, ReadsWithoutErrors) {
     const std::string path = test::sourcePath("scenes/" + GetParam());
