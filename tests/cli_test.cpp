@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "backends/backend.h"
+#include "fetched_assets.h"
 #include "test_paths.h"
 
 namespace trazo::test {
@@ -144,9 +145,14 @@ TEST(Cli, TimeBudgetStopsTheRender) {
 // Every scene shipped in scenes/ renders (tiny, one pass) with nothing of it left out (no warning).
 TEST(Cli, EveryShippedSceneRenders) {
     int count = 0;
+    std::string absent;  // the scenes not rendered, and why
     for (const auto& entry : fs::directory_iterator(sourcePath("scenes"))) {
         if (entry.path().extension() != ".scene") continue;
         ++count;
+        if (const std::string why = absentFetchedAsset(entry.path().string()); !why.empty()) {
+            absent += "\n" + why;
+            continue;
+        }
         const std::string out = tempPath(entry.path().stem().string() + ".png");
         const CommandResult r =
             runTrazo("--render " + entry.path().string() + " -o " + out + " --width 24 --height 24 --spp 1 --quiet");
@@ -155,6 +161,7 @@ TEST(Cli, EveryShippedSceneRenders) {
         EXPECT_EQ(r.errors.find("warning"), std::string::npos) << entry.path() << "\n" << r.errors;
     }
     EXPECT_GE(count, 19);  // the seed's 19 scene files (the 20th seed file is the .csg)
+    if (!absent.empty()) GTEST_SKIP() << "not rendered:" << absent;
 }
 
 }  // namespace

@@ -8,9 +8,9 @@
 #include <fstream>
 #include <memory>
 
-#include "../bench/convergence/convergence_series.h"
 #include "device/flatten.h"
 #include "scene/scene_reader.h"
+#include "support/convergence_series.h"
 #include "test_paths.h"
 
 namespace trazo::test {

@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "backends/backend.h"
+#include "fetched_assets.h"
 #include "render_harness.h"
 #include "scene/scene.h"
 #include "test_paths.h"
@@ -198,7 +199,12 @@ TEST(CudaAgreementScenes, ShippedScenesAreAllListed) {
     EXPECT_EQ(scenesInDirectory(), sorted) << "every scene in scenes/ must be in kShippedScenes";
 }
 
-class CudaAgreement : public ::testing::TestWithParam<const char*> {};
+class CudaAgreement : public ::testing::TestWithParam<const char*> {
+    void SetUp() override {
+        const std::string why = absentFetchedAsset(sourcePath(std::string("scenes/") + GetParam()));
+        if (!why.empty()) GTEST_SKIP() << why;
+    }
+};
 
 TEST_P(CudaAgreement, SameImageAsCpu) {
     std::string device;
@@ -240,7 +246,9 @@ TEST_P(CudaAgreementRule, CalibratedOnTheCpu) {
     std::printf("[ sensitivity ] %s: %zu undecided pixels, %.1f new flips per nudge, nudge RMSE %.3g\n",
                 GetParam().scene, s.undecidedCount, s.newFlips, s.nudgeRmse);
     EXPECT_GT(s.nudgeRmse, 0.0) << "a nudge that changes nothing measures nothing";
-    if (GetParam().hasTies) EXPECT_GT(s.undecidedCount, 0u) << "the nudges missed the scene's ties";
+    if (GetParam().hasTies) {
+        EXPECT_GT(s.undecidedCount, 0u) << "the nudges missed the scene's ties";
+    }
 
     EXPECT_TRUE(agreesWithin(cpu, renderNudged(path, kThirdNudge), s, 1.0)) << "a third nudge";
 

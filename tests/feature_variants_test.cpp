@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "device/flatten.h"
+#include "fetched_assets.h"
 #include "integrator/sample_variants.h"
 #include "render_harness.h"
 #include "scene/scene_reader.h"
@@ -14,9 +15,14 @@ namespace {
 
 TEST(FeatureVariants, EveryShippedSceneMatchesTheAllFeaturesOracleBitForBit) {
     int scenes = 0;
+    std::string absent;  // the scenes not compared, and why
     for (const auto& entry : std::filesystem::directory_iterator(sourcePath("scenes"))) {
         if (entry.path().extension() != ".scene") continue;
         ++scenes;
+        if (const std::string why = absentFetchedAsset(entry.path().string()); !why.empty()) {
+            absent += "\n" + why;
+            continue;
+        }
         const RenderRequest request{.passes = 3, .seed = 7, .width = 40, .height = 40};
         RenderRequest oracle = request;
         oracle.allFeatures = true;
@@ -31,6 +37,7 @@ TEST(FeatureVariants, EveryShippedSceneMatchesTheAllFeaturesOracleBitForBit) {
         EXPECT_EQ(specialised.rays, reference.rays) << entry.path();
     }
     EXPECT_GE(scenes, 19);
+    if (!absent.empty()) GTEST_SKIP() << "not compared:" << absent;
 }
 
 TEST(FeatureVariants, SceneFeaturesPickTheMatchingInstance) {

@@ -8,10 +8,10 @@
 #include <sstream>
 
 #include "device/flatten.h"
-#include "geometry/tessellate.h"
 #include "integrator/scene_intersect.h"
 #include "render_harness.h"
 #include "scene/scene_reader.h"
+#include "support/tessellate.h"
 #include "test_paths.h"
 
 namespace trazo::test {

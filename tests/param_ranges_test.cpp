@@ -56,7 +56,7 @@ int expectWidgetLimitsAreTheReaders(std::span<const ParamSpec<Target>> table, Ta
     return widgets;
 }
 
-TEST(ParamRangesTest, EveryWidgetSpansExactlyWhatTheReaderAccepts) {
+TEST(ParamRanges, EveryWidgetSpansExactlyWhatTheReaderAccepts) {
     const int widgets =
         expectWidgetLimitsAreTheReaders<SceneSettings>(sceneSettingsTable(), [](Scene& s) -> auto& { return s.settings; }) +
         expectWidgetLimitsAreTheReaders<Camera>(cameraTable(), [](Scene& s) -> auto& { return s.camera; }) +
@@ -71,7 +71,7 @@ TEST(ParamRangesTest, EveryWidgetSpansExactlyWhatTheReaderAccepts) {
     EXPECT_EQ(materialWidgets, 8);
 }
 
-TEST(ParamRangesTest, RenderBoundedSettingsStopAtTheirLimits) {
+TEST(ParamRanges, RenderBoundedSettingsStopAtTheirLimits) {
     // Read by eye from docs/LIMITS.md: q ≤ 724, ReflectionSteps ≤ 65 536, a 1024 × 1024 light grid.
     auto maxOf = [](auto table, std::string_view name) {
         for (const auto& row : table)
@@ -85,7 +85,7 @@ TEST(ParamRangesTest, RenderBoundedSettingsStopAtTheirLimits) {
     EXPECT_EQ(maxOf(areaLightTable(), "Subdivision"), 1024);
 }
 
-TEST(ParamRangesTest, FitToCheckKeepsEditsReadable) {
+TEST(ParamRanges, FitToCheckKeepsEditsReadable) {
     ParamInfo direction{.name = "Direction", .count = 3, .check = ValueCheck::NonZeroVector};
     ParamValue zero;
     EXPECT_FALSE(fitToCheck(direction, zero));  // the panel keeps the old direction

@@ -10,6 +10,7 @@
 #include "core/rng.h"
 #include "accel/collapse_bvh.h"
 #include "device/flatten.h"
+#include "fetched_assets.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"
 
@@ -69,7 +70,12 @@ std::vector<RayQuery> sceneRays(const SceneArrays& arrays, uint32_t count, uint3
     return rays;
 }
 
-class RayQueries : public ::testing::TestWithParam<const char*> {};
+class RayQueries : public ::testing::TestWithParam<const char*> {
+    void SetUp() override {
+        const std::string why = absentFetchedAsset(sourcePath(std::string("scenes/") + GetParam()));
+        if (!why.empty()) GTEST_SKIP() << why;
+    }
+};
 
 TEST_P(RayQueries, CpuBackendMatchesBruteForce) {
     const SceneArrays arrays = loadArrays(std::string("scenes/") + GetParam());

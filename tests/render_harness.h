@@ -30,7 +30,7 @@ struct RenderRequest {
     int width = 0, height = 0;  // 0: the scene's RenderWidth/RenderHeight
     StrataBlocks blocks{};      // the strata a pass takes (StrataBlocks::whole(): the thesis's estimator)
     bool cycleAware = false;    // render as the CLI does: halves and strata windows from the scene's cycle
-    std::function<void(Scene&)> editScene;  // applied to the scene as read, before flatten (e.g. a nudge)
+    std::function<void(Scene&)> editScene{};  // applied to the scene as read, before flatten (e.g. a nudge)
 };
 
 // Fails the current test (ADD_FAILURE) and returns an empty image when the scene does not read.

@@ -26,7 +26,7 @@ void expectNear(Vec3 a, Vec3 b, float tolerance = 1e-4f) {
     EXPECT_NEAR(a.z, b.z, tolerance);
 }
 
-TEST(CameraControllerTest, OrbitKeepsPoiAndDistance) {
+TEST(CameraController, OrbitKeepsPoiAndDistance) {
     const CameraController controller;
     Camera c = fileCamera();
     controller.orbit(c, 120.0f, -45.0f);
@@ -36,7 +36,7 @@ TEST(CameraControllerTest, OrbitKeepsPoiAndDistance) {
     EXPECT_LT(c.pov.y, 5.0f);             // dragging up tilts the camera down
 }
 
-TEST(CameraControllerTest, HorizontalOrbitTurnsAboutY) {
+TEST(CameraController, HorizontalOrbitTurnsAboutY) {
     CameraControllerSettings s;
     s.orbitRadiansPerPixel = 0.01f;
     const CameraController controller(s);
@@ -45,7 +45,7 @@ TEST(CameraControllerTest, HorizontalOrbitTurnsAboutY) {
     expectNear(c.pov, Vec3(15, 5, 0), 1e-3f);
 }
 
-TEST(CameraControllerTest, OrbitPitchStopsShortOfThePole) {
+TEST(CameraController, OrbitPitchStopsShortOfThePole) {
     const CameraController controller;
     Camera c = fileCamera();
     controller.orbit(c, 0.0f, 1e6f);
@@ -56,7 +56,7 @@ TEST(CameraControllerTest, OrbitPitchStopsShortOfThePole) {
     EXPECT_TRUE(std::isfinite(f.right.x) && std::isfinite(f.up.y));
 }
 
-TEST(CameraControllerTest, PanMovesPovAndPoiTogetherInTheImagePlane) {
+TEST(CameraController, PanMovesPovAndPoiTogetherInTheImagePlane) {
     const CameraController controller;
     Camera c = fileCamera();
     // At the POI's depth the image is 2·15·tan(22.5°) units tall; 100 of 200 pixels is half of that.
@@ -68,7 +68,7 @@ TEST(CameraControllerTest, PanMovesPovAndPoiTogetherInTheImagePlane) {
     EXPECT_NEAR(c.poi.y, 5.0f + half, 1e-3f);
 }
 
-TEST(CameraControllerTest, DollyScalesTheDistanceAndNeverCrossesThePoi) {
+TEST(CameraController, DollyScalesTheDistanceAndNeverCrossesThePoi) {
     const CameraController controller;
     Camera c = fileCamera();
     controller.dolly(c, 1.0f);
@@ -80,7 +80,7 @@ TEST(CameraControllerTest, DollyScalesTheDistanceAndNeverCrossesThePoi) {
     expectNear(c.poi, Vec3(0, 5, 0));
 }
 
-TEST(CameraControllerTest, FlyMovesAlongTheView) {
+TEST(CameraController, FlyMovesAlongTheView) {
     const CameraController controller;
     Camera c = fileCamera();
     controller.fly(c, 1.0f, 0.0f, 0.0f, 1.0f);  // half the distance per second, forward = -Z here
@@ -91,7 +91,7 @@ TEST(CameraControllerTest, FlyMovesAlongTheView) {
     EXPECT_GT(c.pov.y, 5.0f);
 }
 
-TEST(CameraControllerTest, FrameLooksAtTheBoundsFromTheSameDirection) {
+TEST(CameraController, FrameLooksAtTheBoundsFromTheSameDirection) {
     const CameraController controller;
     Camera c = fileCamera();
     Aabb b;
@@ -104,7 +104,7 @@ TEST(CameraControllerTest, FrameLooksAtTheBoundsFromTheSameDirection) {
     EXPECT_NEAR(length(c.pov - c.poi), radius / std::sin(22.5f * 3.14159265f / 180.0f), 1e-3f);
 }
 
-TEST(CameraControllerTest, ResetRestoresTheFileCamera) {
+TEST(CameraController, ResetRestoresTheFileCamera) {
     const CameraController controller;
     Camera c = fileCamera();
     controller.orbit(c, 10, 10);
@@ -116,7 +116,7 @@ TEST(CameraControllerTest, ResetRestoresTheFileCamera) {
     EXPECT_EQ(c.fovDegrees, 45.0f);
 }
 
-TEST(CameraControllerTest, SceneBoundsCoverShapesAndLights) {
+TEST(CameraController, SceneBoundsCoverShapesAndLights) {
     Scene scene;
     scene.spheres.push_back({kDefaultMaterial, {0, 1, 0}, 1.0f, {}});
     Box box;

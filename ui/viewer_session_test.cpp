@@ -65,7 +65,7 @@ Scene readScene(const std::string& relative) {
     return scene;
 }
 
-TEST(ViewerSessionTest, StartsUploadedSizedAndClear) {
+TEST(ViewerSession, StartsUploadedSizedAndClear) {
     RecordingBackend::Calls calls;
     ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 40, 30);
     EXPECT_EQ(calls.upload, 1);
@@ -77,7 +77,7 @@ TEST(ViewerSessionTest, StartsUploadedSizedAndClear) {
     EXPECT_EQ(session.cyclePasses(), 100u);  // the 10×10 area light
 }
 
-TEST(ViewerSessionTest, MaterialEditReuploadsAndRestarts) {
+TEST(ViewerSession, MaterialEditReuploadsAndRestarts) {
     RecordingBackend::Calls calls;
     ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
     session.renderPasses(3);
@@ -97,7 +97,7 @@ TEST(ViewerSessionTest, MaterialEditReuploadsAndRestarts) {
     EXPECT_EQ(calls.reset, resets + 1);
 }
 
-TEST(ViewerSessionTest, CameraEditResetsWithoutUpload) {
+TEST(ViewerSession, CameraEditResetsWithoutUpload) {
     RecordingBackend::Calls calls;
     ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
     session.renderPasses(2);
@@ -111,7 +111,7 @@ TEST(ViewerSessionTest, CameraEditResetsWithoutUpload) {
     EXPECT_EQ(calls.lastFrame.camera.origin.x, 1.0f);
 }
 
-TEST(ViewerSessionTest, ResizeReallocates) {
+TEST(ViewerSession, ResizeReallocates) {
     RecordingBackend::Calls calls;
     ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
     session.renderPasses(2);
@@ -128,7 +128,7 @@ TEST(ViewerSessionTest, ResizeReallocates) {
     EXPECT_EQ(calls.lastFrame.camera.width, 24u);
 }
 
-TEST(ViewerSessionTest, PreviewRendersSmallerAndFullSizeReturns) {
+TEST(ViewerSession, PreviewRendersSmallerAndFullSizeReturns) {
     RecordingBackend::Calls calls;
     ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 30, 17);
     session.setPreviewDivisor(4);
@@ -144,7 +144,7 @@ TEST(ViewerSessionTest, PreviewRendersSmallerAndFullSizeReturns) {
     EXPECT_EQ(session.passes(), 1u);
 }
 
-TEST(ViewerSessionTest, BatchesRunOnTheWorkerAndErrorsReachTheCaller) {
+TEST(ViewerSession, BatchesRunOnTheWorkerAndErrorsReachTheCaller) {
     RecordingBackend::Calls calls;
     ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 8, 8);
     std::atomic<int> done{0};
@@ -179,7 +179,7 @@ std::vector<Vec3> headlessImage(const Scene& scene, uint32_t width, uint32_t hei
 }
 
 // The viewer's passes, in any batching, accumulate exactly what the headless render does.
-TEST(ViewerSessionTest, BatchedPassesEqualTheHeadlessRender) {
+TEST(ViewerSession, BatchedPassesEqualTheHeadlessRender) {
     const Scene scene = readScene("scenes/scene1_area.scene");
     ViewerSession session(scene, createCpuBackend(2), 7, 24, 16);
     for (uint32_t batch : {1u, 2u, 5u, 3u}) session.renderPasses(batch);
@@ -192,7 +192,7 @@ TEST(ViewerSessionTest, BatchedPassesEqualTheHeadlessRender) {
 }
 
 // Fixed blocks other than one stratum (--blocks B, no growth) still accumulate exactly what --render does.
-TEST(ViewerSessionTest, FixedBlocksEqualTheHeadlessRender) {
+TEST(ViewerSession, FixedBlocksEqualTheHeadlessRender) {
     const Scene scene = readScene("scenes/scene1_area.scene");
     ViewerSession session(scene, createCpuBackend(2), 5, 24, 16);
     const StrataBlocks blocks{1, 10, 1, 1};
@@ -208,7 +208,7 @@ TEST(ViewerSessionTest, FixedBlocksEqualTheHeadlessRender) {
 // With growth on, blocks double at cycle boundaries up to the headless render's, each segment's samples
 // weighted by the one-stratum passes they stand for; the image stays an unbiased estimate: its mean
 // difference from a converged reference (another seed) is within 4 standard errors of 0.
-TEST(ViewerSessionTest, BlocksGrowAtCycleBoundariesAndKeepTheEstimate) {
+TEST(ViewerSession, BlocksGrowAtCycleBoundariesAndKeepTheEstimate) {
     const Scene scene = readScene("scenes/scene1_area.scene");
     ViewerSession session(scene, createCpuBackend(2), 3, 24, 16);
     session.setBlocks(StrataBlocks::ones(), 1e9);  // any pass fits
@@ -237,7 +237,7 @@ TEST(ViewerSessionTest, BlocksGrowAtCycleBoundariesAndKeepTheEstimate) {
 }
 
 // An edit changes the image; undoing it and restarting gives the first image back bit for bit.
-TEST(ViewerSessionTest, EditChangesTheImageAndUndoRestoresIt) {
+TEST(ViewerSession, EditChangesTheImageAndUndoRestoresIt) {
     ViewerSession session(readScene("scenes/scene1_area.scene"), createCpuBackend(2), 0, 24, 16);
     session.renderPasses(4);
     const std::vector<Vec3> before = session.image();

@@ -13,9 +13,9 @@
 #include "accel/collapse_bvh.h"
 #include "core/rng.h"
 #include "device/flatten_mesh.h"
-#include "geometry/tessellate.h"
 #include "backends/backend.h"
 #include "scene/obj_reader.h"
+#include "support/tessellate.h"
 #if TRAZO_HAVE_EMBREE
 #include "embree_scene.h"
 #endif

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "convergence_series.h"
 #include "device/flatten.h"
-#include "image/plot.h"
 #include "scene/scene_reader.h"
+#include "support/convergence_series.h"
+#include "support/plot.h"
 
 namespace {
 

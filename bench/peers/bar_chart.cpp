@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "image/image_writer.h"
-#include "image/plot.h"
-#include "image/plot_font.h"
+#include "support/plot.h"
+#include "support/plot_font.h"
 
 namespace {
 

@@ -12,10 +12,10 @@
 #include "accel/bvh_build.h"
 #include "accel/bvh_traverse.h"
 #include "accel/collapse_bvh.h"
-#include "core/counter_uniform.h"
 #include "core/thread_pool.h"
 #include "geometry/intersect_triangle_leaf.h"
-#include "geometry/tessellate.h"
+#include "support/counter_uniform.h"
+#include "support/tessellate.h"
 
 namespace trazo {
 namespace {
@@ -303,7 +303,9 @@ TEST(BvhBuild, ExponentialSpacingStaysWithinMaxDepth) {
         ASSERT_EQ(tBvh, tBrute) << "ray " << i;
         int leaves = 0;
         EXPECT_FALSE(traverseAny(wide.data(), ray, 0.0f, INFINITY, [&](uint32_t, uint32_t, float) { return ++leaves, false; }));
-        if (along) EXPECT_GE(leaves, 240) << "a ray along the row should enter most leaves";
+        if (along) {
+            EXPECT_GE(leaves, 240) << "a ray along the row should enter most leaves";
+        }
     }
 }
 
@@ -368,7 +370,9 @@ void expectMatchesBruteForce(const TriangleBvh& scene, const std::vector<Ray>& r
         float tNextBvh = INFINITY, tNextBrute = INFINITY;
         const bool nextBvh = scene.closest(ray, tBrute, tNextBvh, iBvh, hBvh);
         ASSERT_EQ(nextBvh, bruteClosest(scene.tris, ray, tBrute, tNextBrute, iBrute, hBrute)) << "ray " << r;
-        if (nextBvh) ASSERT_EQ(tNextBvh, tNextBrute) << "ray " << r;
+        if (nextBvh) {
+            ASSERT_EQ(tNextBvh, tNextBrute) << "ray " << r;
+        }
     }
     EXPECT_GT(hits, (int)rays.size() / 10) << "too few hits to test anything";
 }

@@ -6,7 +6,7 @@
 
 #include <cstring>
 
-#include "geometry/tessellate.h"
+#include "support/tessellate.h"
 
 namespace trazo {
 namespace {

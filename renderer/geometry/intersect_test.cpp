@@ -293,7 +293,7 @@ void compareOne(const ShapeCase& sc, const Ray& ray, float tMin, float tMax, Tal
     ++tally.rays;
     ShapeHit h{};
     const bool got = sc.intersect(ray, tMin, tMax, h);
-    if (out) *out = got ? h : ShapeHit{-1.0f, {}};
+    if (out) *out = got ? h : ShapeHit{-1.0f, {}, 0, 0.0f, 0.0f};
     const DRay dr = toD(ray);
     // With coordinate slack, a decision is also ambiguous within 16 ulps of the coordinates (a quarter
     // of ray.h's bound): a box's object-space origin, 1e4 sizes from the world origin, is no better.
@@ -347,7 +347,7 @@ void expectClean(const Tally& t, const std::string& label) {
 
 ShapeHit expectHit(bool got, const ShapeHit& h) {
     EXPECT_TRUE(got);
-    return got ? h : ShapeHit{NAN, {NAN, NAN, NAN}};
+    return got ? h : ShapeHit{NAN, {NAN, NAN, NAN}, 0, 0.0f, 0.0f};
 }
 // t to a few ulps of the scale of the configuration.
 void expectT(float t, double want, double scale, double ulps = 4) { EXPECT_NEAR(t, want, ulps * kEps * scale); }

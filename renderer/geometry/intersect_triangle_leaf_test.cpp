@@ -8,8 +8,8 @@
 #include <cstring>
 #include <vector>
 
-#include "core/counter_uniform.h"
-#include "geometry/tessellate.h"
+#include "support/counter_uniform.h"
+#include "support/tessellate.h"
 
 namespace trazo {
 namespace {

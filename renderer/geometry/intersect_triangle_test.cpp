@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/counter_uniform.h"
+#include "support/counter_uniform.h"
 
 namespace trazo {
 namespace {

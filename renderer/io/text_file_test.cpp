@@ -25,14 +25,14 @@ std::string writeFile(const std::string& name, const std::string& text) {
     return path;
 }
 
-TEST(TextFileTest, ReadsARegularFileWhole) {
+TEST(TextFile, ReadsARegularFileWhole) {
     const std::string path = writeFile("whole.txt", std::string("a\0b\nc", 5));
     std::string text, reason;
     ASSERT_TRUE(readWholeFile(path, text, reason)) << reason;
     EXPECT_EQ(text, std::string("a\0b\nc", 5));
 }
 
-TEST(TextFileTest, RefusesWhatIsNotARegularFile) {
+TEST(TextFile, RefusesWhatIsNotARegularFile) {
     std::string text, reason;
     EXPECT_FALSE(readWholeFile("/nonexistent/trazo/x", text, reason));
     EXPECT_EQ(reason, "No such file or directory");
@@ -46,7 +46,7 @@ TEST(TextFileTest, RefusesWhatIsNotARegularFile) {
 
 // A FIFO with no writer blocks an ordinary open for ever: the reader must refuse it without opening it. Run on
 // a thread with a deadline; should it block, opening the write end releases it and the test fails.
-TEST(TextFileTest, RefusesAFifoWithoutBlocking) {
+TEST(TextFile, RefusesAFifoWithoutBlocking) {
     const std::string fifo = test::tempPath("text_file.fifo");
     std::filesystem::remove(fifo);
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
@@ -72,7 +72,7 @@ TEST(TextFileTest, RefusesAFifoWithoutBlocking) {
     std::filesystem::remove(fifo);
 }
 
-TEST(TextFileTest, NulInAPathIsRefused) {
+TEST(TextFile, NulInAPathIsRefused) {
     const std::string path = writeFile("nul", "x");
     std::string text, reason;
     EXPECT_FALSE(readWholeFile(path + std::string("\0.obj", 5), text, reason));  // would open `path`
@@ -81,7 +81,7 @@ TEST(TextFileTest, NulInAPathIsRefused) {
 
 // The size is checked before any allocation: a sparse file that claims 2^31 + 1 bytes costs nothing to make
 // and is refused at once; a file one byte over a limit is refused, one at the limit is read.
-TEST(TextFileTest, SizeIsBoundedBeforeReading) {
+TEST(TextFile, SizeIsBoundedBeforeReading) {
     const std::string sparse = writeFile("sparse.obj", "");
     ASSERT_EQ(::truncate(sparse.c_str(), (off_t(1) << 31) + 1), 0);
     std::string text, reason;
@@ -97,7 +97,7 @@ TEST(TextFileTest, SizeIsBoundedBeforeReading) {
     EXPECT_EQ(text.size(), 1000u);
 }
 
-TEST(TextFileTest, ASceneSizedReadReportsTheOsReason) {
+TEST(TextFile, ASceneSizedReadReportsTheOsReason) {
     std::string text, reason;
     EXPECT_FALSE(readWholeFile("/nonexistent/trazo/file.scene", text, reason, kMaxSceneFileBytes));
     EXPECT_EQ(reason, "No such file or directory");
@@ -107,14 +107,14 @@ TEST(TextFileTest, ASceneSizedReadReportsTheOsReason) {
     EXPECT_EQ(reason, "not a regular file (a character device)");
 }
 
-TEST(TextFileTest, CheckReadableOpensOnlyRegularFiles) {
+TEST(TextFile, CheckReadableOpensOnlyRegularFiles) {
     std::string reason;
     EXPECT_FALSE(checkReadable("/dev/null", reason));
     EXPECT_EQ(reason, "not a regular file (a character device)");
     EXPECT_TRUE(checkReadable(writeFile("readable.txt", "x"), reason)) << reason;
 }
 
-TEST(TextFileTest, RelativePathsResolveAgainstTheNamingFile) {
+TEST(TextFile, RelativePathsResolveAgainstTheNamingFile) {
     EXPECT_EQ(resolveRelativePath("scenes/a.scene", "assets/b.obj"), "scenes/assets/b.obj");
     EXPECT_EQ(resolveRelativePath("scenes/sub/a.scene", "../c.csg"), "scenes/c.csg");
     EXPECT_EQ(resolveRelativePath("a.scene", "b.obj"), "b.obj");

@@ -163,7 +163,9 @@ TEST(ErrorEstimate, StratifiedHalvesBracketTheTruth) {
         renderPassRange(backend, frame, 0, passes, 1);  // parity split: wrong for 12 strata
         backend.readAccumulation(accum);
         // The parity halves differ by a fixed amount (odd against even strata): the bias does not shrink.
-        if (passes >= 48) EXPECT_GT(estimateError(accum).relError, 2.0 * backend.trueRelError()) << passes;
+        if (passes >= 48) {
+            EXPECT_GT(estimateError(accum).relError, 2.0 * backend.trueRelError()) << passes;
+        }
     }
 }
 

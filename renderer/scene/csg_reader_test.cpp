@@ -17,7 +17,7 @@ std::string errorsOf(const Diagnostics& d) {
     return s;
 }
 
-TEST(CsgReaderTest, SeedExampleBuildsTheThesisTree) {
+TEST(CsgReader, SeedExampleBuildsTheThesisTree) {
     Diagnostics diags;
     const auto tree = readCsgFile(test::sourcePath("scenes/csg_example.csg"), diags);
     ASSERT_TRUE(tree) << errorsOf(diags);
@@ -46,7 +46,7 @@ TEST(CsgReaderTest, SeedExampleBuildsTheThesisTree) {
     EXPECT_EQ(tree->nodes[0].where.line, 12);
 }
 
-TEST(CsgReaderTest, OperationTypeCountsAllOperations) {
+TEST(CsgReader, OperationTypeCountsAllOperations) {
     Diagnostics diags;
     const auto tree = readCsgText(
         "Sphere {\n}\nBox {\n}\nCylinder {\n}\n"
@@ -60,7 +60,7 @@ TEST(CsgReaderTest, OperationTypeCountsAllOperations) {
     EXPECT_EQ(tree->nodes[4].transforms[0].value.y, 1.0f);
 }
 
-TEST(CsgReaderTest, PrimitivesTakeTransformsAndIgnoreMaterial) {
+TEST(CsgReader, PrimitivesTakeTransformsAndIgnoreMaterial) {
     Diagnostics diags;
     const auto tree = readCsgText("Sphere\n{\n Material matWhite\n Scale 1 2 1\n Rotation 0 0 1 0.5\n}\n", "e.csg", diags);
     ASSERT_TRUE(tree) << errorsOf(diags);
@@ -79,9 +79,9 @@ struct BadCsg {
     std::string expected;  // one of the errors, formatted
 };
 
-class CsgReaderErrorTest : public ::testing::TestWithParam<BadCsg> {};
+class CsgReaderError : public ::testing::TestWithParam<BadCsg> {};
 
-TEST_P(CsgReaderErrorTest, ReportsTheCsgLine) {
+TEST_P(CsgReaderError, ReportsTheCsgLine) {
     Diagnostics diags;
     EXPECT_FALSE(readCsgText(GetParam().text, "t.csg", diags));
     EXPECT_NE(errorsOf(diags).find(GetParam().expected + "\n"), std::string::npos) << errorsOf(diags);
@@ -108,7 +108,7 @@ std::string chainOfUnions(int spheres) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Errors, CsgReaderErrorTest,
+    Errors, CsgReaderError,
     ::testing::Values(
         BadCsg{"UnknownType", kTwoSpheres + operation("Union", "Spere", 0, "Sphere", 1),
                "t.csg:6: error: unknown node type 'Spere' (did you mean 'Sphere'?)"},
@@ -145,7 +145,7 @@ INSTANTIATE_TEST_SUITE_P(
                    ": error: too many CSG nodes: the file has 65, at most 64 are supported"}),
     [](const auto& info) { return std::string(info.param.name); });
 
-TEST(CsgReaderTest, TheLargestTreeUnderTheLimitIsAccepted) {
+TEST(CsgReader, TheLargestTreeUnderTheLimitIsAccepted) {
     Diagnostics diags;
     // A binary tree has an odd number of nodes: 32 spheres + 31 unions = 63 is the largest within 64.
     const auto tree = readCsgText(chainOfUnions(32), "t.csg", diags);
@@ -154,7 +154,7 @@ TEST(CsgReaderTest, TheLargestTreeUnderTheLimitIsAccepted) {
     EXPECT_EQ(tree->root, 62);
 }
 
-TEST(CsgReaderTest, UnreadableFileNamesPathAndReason) {
+TEST(CsgReader, UnreadableFileNamesPathAndReason) {
     Diagnostics diags;
     EXPECT_FALSE(readCsgFile("/nonexistent/trazo/t.csg", diags));
     EXPECT_EQ(errorsOf(diags), "/nonexistent/trazo/t.csg: error: cannot read CSG file: No such file or directory\n");

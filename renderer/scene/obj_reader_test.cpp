@@ -34,7 +34,7 @@ std::vector<Tri> positionTriangles(const MeshData& m) {
     return t;
 }
 
-TEST(ObjReaderTest, TriangleWithAllAttributes) {
+TEST(ObjReader, TriangleWithAllAttributes) {
     Diagnostics diags;
     const auto mesh = readObjFile(writeObj("full.obj",
                                            "# a triangle\n"
@@ -62,7 +62,7 @@ TEST(ObjReaderTest, TriangleWithAllAttributes) {
     EXPECT_TRUE(mesh->hasUvs);
 }
 
-TEST(ObjReaderTest, PolygonsAreFanTriangulated) {
+TEST(ObjReader, PolygonsAreFanTriangulated) {
     Diagnostics diags;
     // A quad whose diagonal 1-3 is the shorter one: a "shorter diagonal" split would give (0,1,3),(1,2,3).
     const auto mesh = readObjText("v 0 0 0\nv 10 0 0\nv 10 1 0\nv 9 9 0\nv -1 5 0\n"
@@ -73,7 +73,7 @@ TEST(ObjReaderTest, PolygonsAreFanTriangulated) {
     EXPECT_EQ(positionTriangles(*mesh), expected);
 }
 
-TEST(ObjReaderTest, NegativeIndicesCountBackFromTheCurrentLine) {
+TEST(ObjReader, NegativeIndicesCountBackFromTheCurrentLine) {
     Diagnostics diags;
     const auto mesh = readObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 5 5 5\nf -4 -1 -2\n", "neg.obj", diags);
     ASSERT_TRUE(mesh) << firstError(diags);
@@ -81,7 +81,7 @@ TEST(ObjReaderTest, NegativeIndicesCountBackFromTheCurrentLine) {
     EXPECT_EQ(positionTriangles(*mesh), expected);
 }
 
-TEST(ObjReaderTest, MissingNormalsAndUvs) {
+TEST(ObjReader, MissingNormalsAndUvs) {
     Diagnostics diags;
     const auto plain = readObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "plain.obj", diags);
     ASSERT_TRUE(plain);
@@ -104,7 +104,7 @@ TEST(ObjReaderTest, MissingNormalsAndUvs) {
     EXPECT_FALSE(diags.hasErrors());
 }
 
-TEST(ObjReaderTest, ForwardReferencesAreAllowed) {
+TEST(ObjReader, ForwardReferencesAreAllowed) {
     Diagnostics diags;
     const auto mesh = readObjText("f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n", "fwd.obj", diags);
     ASSERT_TRUE(mesh) << firstError(diags);
@@ -116,16 +116,16 @@ struct BadObj {
     const char* expected;  // the first error, formatted
 };
 
-class ObjReaderErrorTest : public ::testing::TestWithParam<BadObj> {};
+class ObjReaderError : public ::testing::TestWithParam<BadObj> {};
 
-TEST_P(ObjReaderErrorTest, ReportsTheObjLine) {
+TEST_P(ObjReaderError, ReportsTheObjLine) {
     Diagnostics diags;
     EXPECT_FALSE(readObjText(GetParam().text, "bad.obj", diags));
     EXPECT_EQ(firstError(diags), GetParam().expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Malformed, ObjReaderErrorTest,
+    Malformed, ObjReaderError,
     ::testing::Values(
         BadObj{"v 0 0 0\nv 1 0 0\nv 1 abc 0\nf 1 2 3\n", "bad.obj:3:5: error: 'abc' is not a finite number"},
         BadObj{"v 0 0 0\nv 1 0 0\nv 1 nan 0\nf 1 2 3\n", "bad.obj:3:5: error: 'nan' is not a finite number"},
@@ -151,7 +151,7 @@ INSTANTIATE_TEST_SUITE_P(
 // Indices that do not fit what atoi (tinyobjloader) reads are refused as written, before tinyobjloader
 // wraps them (4294967297 would read as 1); -9223372036854775808 is never negated.
 INSTANTIATE_TEST_SUITE_P(
-    HugeIndices, ObjReaderErrorTest,
+    HugeIndices, ObjReaderError,
     ::testing::Values(
         BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9223372036854775808\n",
                "bad.obj:4:7: error: vertex index -9223372036854775808 is out of range (an OBJ file holds at most "
@@ -182,7 +182,7 @@ INSTANTIATE_TEST_SUITE_P(
 // Normal and uv indices are judged like positions, on every corner, whether or not the attribute is kept
 // (one given on some faces only is dropped, but an index out of range is still an error).
 INSTANTIATE_TEST_SUITE_P(
-    AttributeIndices, ObjReaderErrorTest,
+    AttributeIndices, ObjReaderError,
     ::testing::Values(
         BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//2 3//1\n",
                "bad.obj:5:8: error: normal index 2 is out of range (the file has 1)"},
@@ -201,7 +201,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // Lines, words and bytes that a hostile file may hold: each a located error, never a crash.
 INSTANTIATE_TEST_SUITE_P(
-    HostileBytes, ObjReaderErrorTest,
+    HostileBytes, ObjReaderError,
     ::testing::Values(
         BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 # note\n",
                "bad.obj:4: error: malformed face: tinyobjloader reads text after its vertices (such as a # comment) "
@@ -216,7 +216,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadObj{"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 inf\nf 1/1 2/1 3/1\n",
                "bad.obj:4:6: error: 'inf' is not a finite number"}));
 
-TEST(ObjReaderTest, NulBytesNeverCutAMessage) {
+TEST(ObjReader, NulBytesNeverCutAMessage) {
     Diagnostics diags;
     const char raw[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\0\nf 1 2 3\n";
     const std::string text(raw, sizeof raw - 1);
@@ -224,7 +224,7 @@ TEST(ObjReaderTest, NulBytesNeverCutAMessage) {
     EXPECT_EQ(firstError(diags), "nul.obj:3:7: error: '0?' is not a finite number");
 }
 
-TEST(ObjReaderTest, OverlongLinesAreRefusedBeforeTheyAreParsed) {
+TEST(ObjReader, OverlongLinesAreRefusedBeforeTheyAreParsed) {
     Diagnostics diags;
     const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf" + std::string(kMaxObjLineBytes, ' ') + "1 2 3\n";
     EXPECT_FALSE(readObjText(text, "long.obj", diags));
@@ -239,7 +239,7 @@ TEST(ObjReaderTest, OverlongLinesAreRefusedBeforeTheyAreParsed) {
 }
 
 // Every mesh the reader returns keeps the contract of obj_reader.h.
-TEST(ObjReaderTest, AcceptedMeshesKeepTheContract) {
+TEST(ObjReader, AcceptedMeshesKeepTheContract) {
     for (const char* text : {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
                              "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1 3 2\n",
                              "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\nf -3 -2 -1\n",
@@ -291,7 +291,7 @@ TEST(ObjMeshContract, NamesTheFirstViolation) {
     EXPECT_EQ(objMeshContractViolation(m), "no faces");
 }
 
-TEST(ObjReaderTest, UnreadableFileNamesPathAndReason) {
+TEST(ObjReader, UnreadableFileNamesPathAndReason) {
     Diagnostics diags;
     EXPECT_FALSE(readObjFile("/nonexistent/trazo/x.obj", diags));
     EXPECT_EQ(firstError(diags), "/nonexistent/trazo/x.obj: error: cannot read OBJ file: No such file or directory");
@@ -300,7 +300,7 @@ TEST(ObjReaderTest, UnreadableFileNamesPathAndReason) {
 // tinyobjloader also breaks lines at a lone \r: a face or vertex behind one is read and checked like any other
 // (once it reached the mesh with an index past what was read, as index 8 of 3 positions), and reported at
 // its line as the reader counts them.
-TEST(ObjReaderTest, FacesBehindALoneCarriageReturnAreRangeChecked) {
+TEST(ObjReader, FacesBehindALoneCarriageReturnAreRangeChecked) {
     const char* const kHint = " (lines counted as OBJ readers count them: a lone \\r also ends a line)";
     const std::pair<const char*, std::string> cases[] = {
         {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nx\rf 1 2 9\n",
@@ -324,14 +324,14 @@ TEST(ObjReaderTest, FacesBehindALoneCarriageReturnAreRangeChecked) {
 }
 
 // tinyobjloader reads text after a face's vertices (a comment) as a vertex index 0: reported at its line.
-TEST(ObjReaderTest, CommentAfterAFaceIsReportedAtItsLine) {
+TEST(ObjReader, CommentAfterAFaceIsReportedAtItsLine) {
     Diagnostics diags;
     EXPECT_FALSE(readObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3 # note\n", "c.obj", diags));
     EXPECT_EQ(firstError(diags).rfind("c.obj:5: error: malformed face", 0), 0u) << firstError(diags);
 }
 
 // A text of a megabyte or more is checked and parsed on two threads: the same mesh, the same first error.
-TEST(ObjReaderTest, LargeTextsReadAsSmallOnes) {
+TEST(ObjReader, LargeTextsReadAsSmallOnes) {
     std::string grid;
     const int n = 300;  // (n + 1)² vertices, 2n² triangles: about 2.5 MB
     for (int i = 0; i <= n; ++i)
@@ -370,7 +370,7 @@ TEST(ObjReaderTest, LargeTextsReadAsSmallOnes) {
                                    ":5: error: 'oops' is not a finite number");
 }
 
-TEST(ObjReaderTest, ManyErrorsAreCapped) {
+TEST(ObjReader, ManyErrorsAreCapped) {
     std::string text;
     for (int i = 0; i < 100; ++i) text += "v a b c\n";
     Diagnostics diags;

@@ -44,7 +44,7 @@ struct ParamInfo {
     ValueKind kind = ValueKind::Real;
     int count = 1;  // number of values on the line
     bool required = false;
-    std::string_view doc;  // one line
+    std::string_view doc{};  // one line
     ValueCheck check = ValueCheck::None;
     bool accumulates = false;  // transforms: every line adds a step instead of the later one winning
     ValueUnit unit = ValueUnit::None;

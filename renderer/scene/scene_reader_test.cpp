@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "fetched_assets.h"
 #include "scene/csg_reader.h"
 #include "test_paths.h"
 
@@ -56,7 +57,7 @@ void writePng(const std::string& path) {
 const char* const kTriangleWithUvs = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
 const char* const kTinyCsg = "Sphere {\n}\nBox {\n}\nUnion {\n LeftType Sphere\n LeftIndex 0\n RightType Box\n RightIndex 0\n}\n";
 
-TEST(SceneReaderTest, EveryParameterReachesItsField) {
+TEST(SceneReader, EveryParameterReachesItsField) {
     const std::string dir = test::tempPath("every");
     writePng(dir + "/a.png");
     writePng(dir + "/b.png");
@@ -261,7 +262,7 @@ AreaLight
     EXPECT_EQ(a.subdivisionY, 6);
 }
 
-TEST(SceneReaderTest, EmptyBlocksTakeTheSpecDefaults) {
+TEST(SceneReader, EmptyBlocksTakeTheSpecDefaults) {
     const Result r = readText(
         "SceneSettings {\n}\nCamera {\n}\nMaterial {\n Name m\n}\nSphere {\n}\nBox {\n}\nCylinder {\n}\n"
         "PointLight {\n}\nAreaLight {\n}\n");
@@ -318,14 +319,14 @@ TEST(SceneReaderTest, EmptyBlocksTakeTheSpecDefaults) {
     EXPECT_EQ(a.subdivisionY, 5);
 }
 
-TEST(SceneReaderTest, AnEmptyFileIsTheDefaultScene) {
+TEST(SceneReader, AnEmptyFileIsTheDefaultScene) {
     const Result r = readText("# nothing here\n\n");
     EXPECT_TRUE(r.diags.items.empty());
     EXPECT_EQ(r.scene.settings.renderWidth, 512);
     EXPECT_FLOAT_EQ(r.scene.camera.pov.z, 10);
 }
 
-TEST(SceneReaderTest, TwoWordSynonyms) {
+TEST(SceneReader, TwoWordSynonyms) {
     const Result r = readText(
         "Material {\n Name m\n Reflection Angle 30\n Reflection Amount 0.5\n}\nAreaLight {\n Roll Angle 0.25\n}\n");
     EXPECT_TRUE(r.diags.items.empty()) << listed(r.diags);
@@ -336,13 +337,13 @@ TEST(SceneReaderTest, TwoWordSynonyms) {
     EXPECT_FLOAT_EQ(r.scene.areaLights[0].rollAngle, 0.25f);
 }
 
-TEST(SceneReaderTest, LaterValueWins) {
+TEST(SceneReader, LaterValueWins) {
     const Result r = readText("Sphere {\n Radius 1\n Center 1 1 1\n Radius 2\n}\n");
     ASSERT_EQ(r.scene.spheres.size(), 1u);
     EXPECT_FLOAT_EQ(r.scene.spheres[0].radius, 2);
 }
 
-TEST(SceneReaderTest, LastCameraWinsAndStartsFromTheDefaults) {
+TEST(SceneReader, LastCameraWinsAndStartsFromTheDefaults) {
     const Result r = readText("Camera {\n POV 1 1 1\n FOV 30\n}\nCamera {\n POI 0 1 0\n}\n");
     EXPECT_TRUE(r.diags.items.empty());
     expectVec(r.scene.camera.pov, 0, 0, 10);
@@ -350,7 +351,7 @@ TEST(SceneReaderTest, LastCameraWinsAndStartsFromTheDefaults) {
     EXPECT_FLOAT_EQ(r.scene.camera.fovDegrees, 45);
 }
 
-TEST(SceneReaderTest, TransformsAccumulateInWrittenOrder) {
+TEST(SceneReader, TransformsAccumulateInWrittenOrder) {
     const Result r = readText(
         "Box {\n Scale 2 2 2\n Translation 1 0 0\n}\n"
         "Box {\n Translation 1 0 0\n Scale 2 2 2\n}\n"
@@ -369,7 +370,7 @@ TEST(SceneReaderTest, TransformsAccumulateInWrittenOrder) {
     EXPECT_EQ(composeTransforms({}).applyToPoint(p).x, 1.0f);
 }
 
-TEST(SceneReaderTest, NamesResolveToIndicesInFileOrder) {
+TEST(SceneReader, NamesResolveToIndicesInFileOrder) {
     const Result r = readText(
         "Material {\n Name a\n}\nMaterial {\n Name b\n}\nSphere {\n Material b\n}\nSphere {\n Material a\n}\n");
     EXPECT_TRUE(r.diags.items.empty()) << listed(r.diags);
@@ -378,7 +379,7 @@ TEST(SceneReaderTest, NamesResolveToIndicesInFileOrder) {
     EXPECT_EQ(r.scene.spheres[1].material, 0);
 }
 
-TEST(SceneReaderTest, AntialiasingOtherThan1_4_16IsAWarningAndFallsBackTo1) {
+TEST(SceneReader, AntialiasingOtherThan1_4_16IsAWarningAndFallsBackTo1) {
     const Result r = readText("SceneSettings {\n Antialiasing 3\n}\n");
     EXPECT_FALSE(r.diags.hasErrors());
     EXPECT_EQ(listed(r.diags), "t.scene:2:15: warning: Antialiasing must be 1, 4 or 16, got 3; using 1\n");
@@ -390,7 +391,7 @@ TEST(SceneReaderTest, AntialiasingOtherThan1_4_16IsAWarningAndFallsBackTo1) {
     }
 }
 
-TEST(SceneReaderTest, ObjectsWithoutMaterialGetTheDefaultAndOneWarningEach) {
+TEST(SceneReader, ObjectsWithoutMaterialGetTheDefaultAndOneWarningEach) {
     const std::string dir = test::tempPath("defaultmat");
     writeFile(dir + "/t.obj", kTriangleWithUvs);
     writeFile(dir + "/t.csg", kTinyCsg);
@@ -411,7 +412,7 @@ TEST(SceneReaderTest, ObjectsWithoutMaterialGetTheDefaultAndOneWarningEach) {
     EXPECT_EQ(r.scene.csgs[0].material, kDefaultMaterial);
 }
 
-TEST(SceneReaderTest, RelativePathsResolveAgainstTheNamingFile) {
+TEST(SceneReader, RelativePathsResolveAgainstTheNamingFile) {
     const std::string dir = test::tempPath("relative");
     writePng(dir + "/scenes/assets/tex.png");
     writeFile(dir + "/scenes/assets/tri.obj", kTriangleWithUvs);
@@ -433,7 +434,7 @@ TEST(SceneReaderTest, RelativePathsResolveAgainstTheNamingFile) {
     EXPECT_TRUE(s.csgs.at(0).tree);
 }
 
-TEST(SceneReaderTest, MeshWithoutUvsWarnsOnceWhenItsMaterialHasTextures) {
+TEST(SceneReader, MeshWithoutUvsWarnsOnceWhenItsMaterialHasTextures) {
     const std::string dir = test::tempPath("nouvs");
     writePng(dir + "/tex.png");
     writeFile(dir + "/plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
@@ -448,7 +449,7 @@ TEST(SceneReaderTest, MeshWithoutUvsWarnsOnceWhenItsMaterialHasTextures) {
                                    "ignored for it\n");
 }
 
-TEST(SceneReaderTest, ErrorsInsideNamedFilesCarryTheirOwnFileAndLine) {
+TEST(SceneReader, ErrorsInsideNamedFilesCarryTheirOwnFileAndLine) {
     const std::string dir = test::tempPath("inner");
     writeFile(dir + "/bad.obj", "v 0 0 0\nv 1 0 zero\nv 0 1 0\nf 1 2 3\n");
     writeFile(dir + "/bad.csg", "Sphere {\n Radius -2\n}\n");
@@ -459,7 +460,7 @@ TEST(SceneReaderTest, ErrorsInsideNamedFilesCarryTheirOwnFileAndLine) {
     EXPECT_NE(errors.find(dir + "/bad.csg:2:9: error: Radius must be positive, got -2\n"), std::string::npos) << errors;
 }
 
-TEST(SceneReaderTest, AllErrorsOfAFileAreCollected) {
+TEST(SceneReader, AllErrorsOfAFileAreCollected) {
     const Result r = readText("Sphere {\n Radius -1\n Centre 0 0 0\n}\nBox {\n Scale 0 1 1\n}\nFoo {\n}\n");
     EXPECT_EQ(listed(r.diags, true),
               "t.scene:2:9: error: Radius must be positive, got -1\n"
@@ -468,7 +469,7 @@ TEST(SceneReaderTest, AllErrorsOfAFileAreCollected) {
               "t.scene:8: error: unknown block 'Foo' (did you mean 'Box'?)\n");
 }
 
-TEST(SceneReaderTest, OneMistakeGivesOneError) {
+TEST(SceneReader, OneMistakeGivesOneError) {
     // A Source with a bad value still counts as given: no second "missing Source" error.
     const Result r = readText("Mesh {\n Material m\n Source a.obj\n}\nMaterial {\n Name m\n}\n");
     EXPECT_EQ(listed(r.diags, true),
@@ -476,13 +477,13 @@ TEST(SceneReaderTest, OneMistakeGivesOneError) {
               "t.scene:2: error: material 'm' is used before it is declared (at line 6)\n");
 }
 
-TEST(SceneReaderTest, UnreadableSceneFileNamesPathAndReason) {
+TEST(SceneReader, UnreadableSceneFileNamesPathAndReason) {
     Diagnostics diags;
     readSceneFile("/nonexistent/trazo/x.scene", diags);
     EXPECT_EQ(listed(diags), "/nonexistent/trazo/x.scene: error: cannot read scene file: No such file or directory\n");
 }
 
-TEST(SceneReaderTest, IntegerParametersRejectFractions) {
+TEST(SceneReader, IntegerParametersRejectFractions) {
     const std::pair<const char*, const char*> cases[] = {
         {"SceneSettings", "RenderWidth 1.5"},     {"SceneSettings", "RenderHeight 2.5"},
         {"SceneSettings", "ReflectionQuality 1.5"}, {"SceneSettings", "ReflectionSteps 1.5"},
@@ -505,9 +506,9 @@ struct BadScene {
     std::string expected;
 };
 
-class SceneReaderErrorTest : public ::testing::TestWithParam<BadScene> {};
+class SceneReaderError : public ::testing::TestWithParam<BadScene> {};
 
-TEST_P(SceneReaderErrorTest, ReportsTheLine) {
+TEST_P(SceneReaderError, ReportsTheLine) {
     const Result r = readText(GetParam().text);
     EXPECT_TRUE(r.diags.hasErrors());
     const std::string errors = listed(r.diags, true);
@@ -515,7 +516,7 @@ TEST_P(SceneReaderErrorTest, ReportsTheLine) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Spec2, SceneReaderErrorTest,
+    Spec2, SceneReaderError,
     ::testing::Values(
         BadScene{"UnknownBlock", "Spher {\n}\n", "t.scene:1: error: unknown block 'Spher' (did you mean 'Sphere'?)"},
         BadScene{"UnknownParameter", "Sphere {\n Radus 2\n}\n",
@@ -613,9 +614,14 @@ std::vector<std::string> sceneFolderFiles() {
     return names;
 }
 
-class SceneReaderSeedTest : public ::testing::TestWithParam<std::string> {};
+class SceneReaderSeed : public ::testing::TestWithParam<std::string> {
+    void SetUp() override {
+        const std::string why = test::absentFetchedAsset(test::sourcePath("scenes/" + GetParam()));
+        if (!why.empty()) GTEST_SKIP() << why;
+    }
+};
 
-TEST_P(SceneReaderSeedTest, ReadsWithoutErrors) {
+TEST_P(SceneReaderSeed, ReadsWithoutErrors) {
     const std::string path = test::sourcePath("scenes/" + GetParam());
     Diagnostics diags;
     if (path.ends_with(".csg")) {
@@ -627,14 +633,14 @@ TEST_P(SceneReaderSeedTest, ReadsWithoutErrors) {
     EXPECT_FALSE(diags.hasErrors()) << listed(diags) << "(missing assets? run scripts/setup.sh)";
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, SceneReaderSeedTest, ::testing::ValuesIn(sceneFolderFiles()), [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(Scenes, SceneReaderSeed, ::testing::ValuesIn(sceneFolderFiles()), [](const auto& info) {
     std::string name = info.param;
     for (char& c : name)
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
     return name;
 });
 
-TEST(SceneReaderSeedContentTest, AllSeedFilesArePresent) {
+TEST(SceneReaderSeedContent, AllSeedFilesArePresent) {
     const std::vector<std::string> present = sceneFolderFiles();
     for (const char* seed :
          {"scene1_area.scene", "scene1_point.scene", "scene2_bunny.scene", "scene2_bunny_point.scene",
@@ -647,7 +653,7 @@ TEST(SceneReaderSeedContentTest, AllSeedFilesArePresent) {
     }
 }
 
-TEST(SceneReaderSeedContentTest, Scene1AreaHasTheThesisContents) {
+TEST(SceneReaderSeedContent, Scene1AreaHasTheThesisContents) {
     Diagnostics diags;
     const Scene s = readSceneFile(test::sourcePath("scenes/scene1_area.scene"), diags);
     ASSERT_FALSE(diags.hasErrors()) << listed(diags);
@@ -662,7 +668,7 @@ TEST(SceneReaderSeedContentTest, Scene1AreaHasTheThesisContents) {
     expectVec(s.camera.pov, 0, 5, 15);
 }
 
-TEST(SceneReaderSeedContentTest, Scene3ReadsItsCsgFile) {
+TEST(SceneReaderSeedContent, Scene3ReadsItsCsgFile) {
     Diagnostics diags;
     const Scene s = readSceneFile(test::sourcePath("scenes/scene3_csg.scene"), diags);
     ASSERT_FALSE(diags.hasErrors()) << listed(diags);

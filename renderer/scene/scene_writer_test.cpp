@@ -125,9 +125,9 @@ void roundTrip(const Scene& original, const std::string& outPath) {
     EXPECT_EQ(formatScene(original, outPath), formatScene(back, outPath));
 }
 
-class SceneWriterSeedTest : public ::testing::TestWithParam<const char*> {};
+class SceneWriterSeed : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(SceneWriterSeedTest, RoundTripGivesTheSameScene) {
+TEST_P(SceneWriterSeed, RoundTripGivesTheSameScene) {
     Diagnostics diags;
     const Scene original = readSceneFile(test::sourcePath(std::string("scenes/") + GetParam()), diags);
     ASSERT_FALSE(diags.hasErrors()) << listed(diags);
@@ -135,11 +135,11 @@ TEST_P(SceneWriterSeedTest, RoundTripGivesTheSameScene) {
     roundTrip(original, test::tempPath("writer") + "/" + GetParam());
 }
 
-INSTANTIATE_TEST_SUITE_P(SeedScenes, SceneWriterSeedTest,
+INSTANTIATE_TEST_SUITE_P(SeedScenes, SceneWriterSeed,
                          ::testing::Values("scene1_area.scene", "scene3_csg.scene", "scene6_glossy.scene",
                                            "scene7_refract.scene", "scene8_textured_mesh.scene"));
 
-TEST(SceneWriterTest, EditedFieldsAndAwkwardValuesSurvive) {
+TEST(SceneWriter, EditedFieldsAndAwkwardValuesSurvive) {
     Diagnostics diags;
     Scene scene = readSceneText(
         "Material {\n Name glass\n}\nSphere {\n}\nBox {\n Material glass\n Scale 1 2 3\n Rotation 0 1 0 0.3\n"
@@ -158,7 +158,7 @@ TEST(SceneWriterTest, EditedFieldsAndAwkwardValuesSurvive) {
     roundTrip(scene, test::tempPath("edited-out") + "/out.scene");
 }
 
-TEST(SceneWriterTest, UnwritableFolderFailsWithAReason) {
+TEST(SceneWriter, UnwritableFolderFailsWithAReason) {
     std::string error;
     EXPECT_FALSE(writeSceneFile(Scene{}, test::tempPath("missing-folder") + "/x/y.scene", error));
     EXPECT_FALSE(error.empty());

@@ -38,7 +38,7 @@ std::string writeImage(const std::string& name, FREE_IMAGE_FORMAT format) {
     return path;
 }
 
-TEST(TextureHeaderTest, EveryAcceptedFormatReadsItsSize) {
+TEST(TextureHeader, EveryAcceptedFormatReadsItsSize) {
     const struct {
         const char* name;
         FREE_IMAGE_FORMAT fif;
@@ -80,7 +80,7 @@ std::string be32(uint32_t v) {
     return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
 }
 
-TEST(TextureHeaderTest, OtherFormatsAreRefusedBeforeDecoding) {
+TEST(TextureHeader, OtherFormatsAreRefusedBeforeDecoding) {
     // A Sun RAS header with negative sizes (crashed FreeImage), a WBMP and an IFF claiming huge sizes (ran for
     // minutes), a GIF, and text.
     expectRefused("s.ras", std::string("\x59\xa6\x6a\x95", 4) + be32(0x80000000u) + be32(0xffffffffu) + be32(8) +
@@ -95,7 +95,7 @@ TEST(TextureHeaderTest, OtherFormatsAreRefusedBeforeDecoding) {
     expectRefused("ok.hdr", fileBytes(writeImage("w.hdr", FIF_HDR)), "a Radiance HDR file");
 }
 
-TEST(TextureHeaderTest, AbsurdOrDamagedHeadersAreRefused) {
+TEST(TextureHeader, AbsurdOrDamagedHeadersAreRefused) {
     const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + be32(13) + "IHDR";
     expectRefused("wide.png", png + be32(2147483647u) + be32(1) + std::string(5, '\0'), "claims 2147483647 × 1");
     expectRefused("zero.png", png + be32(0) + be32(4) + std::string(5, '\0'), "claims 0 × 4");
@@ -128,7 +128,7 @@ TEST(TextureHeaderTest, AbsurdOrDamagedHeadersAreRefused) {
 }
 
 // A valid header over pixels that do not match it is still FreeImage's to refuse, which it must do cleanly.
-TEST(TextureHeaderTest, TruncatedPixelsAreReportedNotCrashedOn) {
+TEST(TextureHeader, TruncatedPixelsAreReportedNotCrashedOn) {
     const std::string path = writeImage("whole.png", FIF_PNG);
     const std::string bytes = fileBytes(path);
     for (size_t keep : {size_t(33), bytes.size() / 2, bytes.size() - 12}) {

@@ -33,7 +33,7 @@ void expectTexel(const TextureImage& image, int x, int y, Vec3 expected) {
     EXPECT_FLOAT_EQ(t.z, expected.z) << x << "," << y;
 }
 
-TEST(TextureReaderTest, PngRowZeroIsTheBottomRow) {
+TEST(TextureReader, PngRowZeroIsTheBottomRow) {
     Diagnostics diags;
     const auto image = readTextureImage(writeTinyPng("tiny.png"), {"t.scene", 3, 0}, diags);
     ASSERT_TRUE(image);
@@ -48,7 +48,7 @@ TEST(TextureReaderTest, PngRowZeroIsTheBottomRow) {
     expectTexel(*image, 1, 1, {g, g, g});
 }
 
-TEST(TextureReaderTest, FloatImagesKeepTheirValues) {
+TEST(TextureReader, FloatImagesKeepTheirValues) {
     const std::string path = test::tempPath("float.pfm");
     FIBITMAP* bm = FreeImage_AllocateT(FIT_RGBF, 2, 1);
     auto* row = reinterpret_cast<FIRGBF*>(FreeImage_GetScanLine(bm, 0));
@@ -63,7 +63,7 @@ TEST(TextureReaderTest, FloatImagesKeepTheirValues) {
     expectTexel(*image, 1, 0, {1.0f, 0.5f, 7.0f});
 }
 
-TEST(TextureReaderTest, GreyscaleBecomesRgb) {
+TEST(TextureReader, GreyscaleBecomesRgb) {
     const std::string path = test::tempPath("grey.png");
     FIBITMAP* bm = FreeImage_Allocate(1, 1, 8);
     RGBQUAD* palette = FreeImage_GetPalette(bm);
@@ -77,7 +77,7 @@ TEST(TextureReaderTest, GreyscaleBecomesRgb) {
     expectTexel(*image, 0, 0, {0.2f, 0.2f, 0.2f});
 }
 
-TEST(TextureReaderTest, MissingFileIsReportedAtTheSourceLine) {
+TEST(TextureReader, MissingFileIsReportedAtTheSourceLine) {
     Diagnostics diags;
     EXPECT_FALSE(readTextureImage("/nonexistent/trazo/t.png", {"t.scene", 7, 0}, diags));
     ASSERT_EQ(diags.items.size(), 1u);
@@ -85,7 +85,7 @@ TEST(TextureReaderTest, MissingFileIsReportedAtTheSourceLine) {
               "t.scene:7: error: cannot read texture '/nonexistent/trazo/t.png': No such file or directory");
 }
 
-TEST(TextureReaderTest, UndecodableFileIsReported) {
+TEST(TextureReader, UndecodableFileIsReported) {
     const std::string path = test::tempPath("junk.png");
     std::ofstream(path) << "this is not an image";
     Diagnostics diags;

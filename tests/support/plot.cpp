@@ -1,12 +1,12 @@
 // Plot rasterisation: coverage-based anti-aliased segments and dots, a 5×7 font scaled 2×, decade ticks.
-#include "image/plot.h"
+#include "support/plot.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 #include "image/image_writer.h"
-#include "image/plot_font.h"
+#include "support/plot_font.h"
 
 namespace trazo {
 

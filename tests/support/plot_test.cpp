@@ -1,5 +1,5 @@
 // Plot writer: the PNG has the requested size, and a known line lands on the pixels the axes say it should.
-#include "image/plot.h"
+#include "support/plot.h"
 
 #include <gtest/gtest.h>
 

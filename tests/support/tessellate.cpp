@@ -1,9 +1,9 @@
 // Generated triangle meshes for tests and benchmarks (host).
-#include "geometry/tessellate.h"
+#include "support/tessellate.h"
 
 #include <cmath>
 
-#include "core/counter_uniform.h"
+#include "support/counter_uniform.h"
 
 namespace trazo {
 namespace {
