@@ -92,7 +92,7 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     const auto buildStart = std::chrono::steady_clock::now();
     FlattenResult flat = flatten(scene);
     stats.buildSeconds = secondsSince(buildStart);
-    printUnsupported(options.renderScene, flat.unsupported);
+    printDiagnostics(flat.warnings);
     stats.width = options.width.value_or((uint32_t)scene.settings.renderWidth);
     stats.height = options.height.value_or((uint32_t)scene.settings.renderHeight);
     const StrataBlocks blocks = options.blocks.value_or(headlessBlocks(flat.arrays));

@@ -174,7 +174,7 @@ void drawRenderPanel(PanelState& state, const RenderInfo& info, PanelActions& ac
     if (ImGui::Checkbox("Render at window size", &state.sizeFollowsWindow)) actions.dirty |= kDirtySize;
     ImGui::SliderFloat("Exposure", &state.tone.exposureStops, -8.0f, 8.0f, "%+.1f stops");
     ImGui::Combo("Tone", &state.tone.mode, "clamp (seed, = PNG)\0sRGB\0filmic\0");
-    for (const std::string& u : info.unsupported) ImGui::TextWrapped("Not drawn yet: %s", u.c_str());
+    for (const std::string& u : info.unsupported) ImGui::TextWrapped("%s", u.c_str());
 }
 
 void drawExportPanel(PanelState& state, PanelActions& actions) {

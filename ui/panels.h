@@ -21,7 +21,7 @@ struct RenderInfo {
     double samples = 0;  // passes weighted by their blocks (ViewerSession::samples)
     std::string blocks;  // the current segment's (describeBlocks)
     double elapsedSeconds = 0, samplesPerSecond = 0, mraysPerSecond = 0;
-    std::vector<std::string> unsupported;
+    std::vector<std::string> unsupported;  // flatten's warnings (what is read but not drawn), formatted
 };
 
 struct PanelState {

@@ -290,7 +290,7 @@ private:
             info.samplesPerSecond = info.samples * info.width * info.height / info.elapsedSeconds;
             info.mraysPerSecond = double(session_.rays()) / info.elapsedSeconds * 1e-6;
         }
-        info.unsupported = session_.unsupported();
+        for (const Diagnostic& d : session_.flattenWarnings().items) info.unsupported.push_back(formatDiagnostic(d));
         return info;
     }
 
@@ -379,7 +379,7 @@ int runViewer(const ViewerOptions& options) {
             return 1;
         }
         ViewerSession session(std::move(scene), std::move(backend), options.seed, width, height);
-        if (!options.quiet) printUnsupported(options.scenePath, session.unsupported());
+        if (!options.quiet) printDiagnostics(session.flattenWarnings());
 
         IMGUI_CHECKVERSION();
         ImGui::CreateContext();

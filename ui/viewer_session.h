@@ -86,7 +86,8 @@ public:
     double renderSeconds() const { return renderSeconds_; }  // batch time since the last reset
     uint64_t generation() const { return generation_; }      // changes whenever the accumulation does
     uint32_t seed() const { return seed_; }
-    const std::vector<std::string>& unsupported() const { return flat_.unsupported; }
+    // What of the scene is read but not drawn (flatten's warnings), as last uploaded.
+    const Diagnostics& flattenWarnings() const { return flat_.warnings; }
     const SceneArrays& arrays() const { return flat_.arrays; }  // as last uploaded
     std::vector<Vec3> image();  // sum / count per pixel, row 0 = top (waits for the batch)
 

@@ -53,21 +53,27 @@ struct MaterialTable {
     }
 };
 
-FeatureMask materialFeatures(const MaterialData& m, const SceneSettings& s) {
+FeatureMask materialFeatures(const MaterialData& m, const RenderSettings& s) {
     FeatureMask f = 0;
-    const bool reflects = !isBlack(m.specular) && m.reflectionAmount > 0.0f && m.opacity > 0.0f &&
-                          s.reflectionQuality >= 1 && s.reflectionSteps >= 1;
+    const bool reflects = materialCanReflect(m, s);
     if (reflects) f |= kFeatureReflection;
     if (reflects && m.reflectionHalfAngle > 0.0f) f |= kFeatureGlossy;
     if (m.opacity < 1.0f) f |= kFeatureRefraction;
     if (!isBlack(m.emissive)) f |= kFeatureEmissive;
-    if (m.diffuseTexture >= 0 || m.specularTexture >= 0 || m.emissiveTexture >= 0 || m.normalTexture >= 0)
-        f |= kFeatureTextures;
+    if (materialHasTextures(m)) f |= kFeatureTextures;
     return f;
 }
 
-bool usesTextures(const Material& m) {
-    return m.diffuseTexture >= 0 || m.specularTexture >= 0 || m.emissiveTexture >= 0 || m.normalTexture >= 0;
+// A warning at the object's block when its material has textures its kind gives no coordinates for.
+template <class Host, class Shape>
+void warnIfTexturesIgnored(const Scene& scene, const Host& object, const char* keyword, const SceneArrays& out,
+                           const Shape& shape, Diagnostics& warnings) {
+    if (object.material == kDefaultMaterial || !scene.materials[object.material].usesTextures()) return;
+    if (objectHasUvs(hostView(out), shape)) return;
+    std::string what = keyword;
+    if constexpr (requires { object.source; }) what += " '" + object.source + "'";
+    warnings.warning(object.where, what + " has no texture coordinates; the textures of material '" +
+                                       scene.materials[object.material].name + "' are ignored for it");
 }
 
 // Texels of the textures that materials use, each stored once, and the materials' indices remapped to them.
@@ -143,19 +149,16 @@ FlattenResult flatten(const Scene& scene) {
     const SceneSettings& s = scene.settings;
 
     // Every object of every kind, kind by kind in the order of objects/object_kinds.h.
-    auto add = [&](ObjectKind kind, const auto& object) {
+    auto add = [&](ObjectKind kind, const char* keyword, const auto& object, const auto& shapes) {
         uint32_t index = 0;
-        if (appendObject(object, out, index)) out.objects.push_back({kind, index, materials.index(object.material)});
+        if (!appendObject(object, out, index)) return;
+        out.objects.push_back({kind, index, materials.index(object.material)});
+        warnIfTexturesIgnored(scene, object, keyword, out, shapes[index], result.warnings);
     };
-#define TRAZO_X(Shape, array, Kind) \
-    for (const auto& object : scene.array) add(ObjectKind::Kind, object);
+#define TRAZO_X(Shape, array, Kind, keyword) \
+    for (const auto& object : scene.array) add(ObjectKind::Kind, keyword, object, out.array);
     TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
-    for (const Mesh& mesh : scene.meshes) {
-        if (mesh.data && !mesh.data->hasUvs && mesh.material != kDefaultMaterial && usesTextures(scene.materials[mesh.material]))
-            result.unsupported.push_back(mesh.where.file + ":" + std::to_string(mesh.where.line) + ": " + mesh.source +
-                                         " has no texture coordinates: the material's textures are ignored on it");
-    }
     buildTopLevel(out);
     out.traversalStackNeed = traversalStackNeed(out);
     if (!materials.defaultUsed) materials.data.pop_back();
@@ -176,17 +179,12 @@ FlattenResult flatten(const Scene& scene) {
     FeatureMask f = 0;
     if (!out.pointLights.empty()) f |= kFeaturePointLights;
     if (!out.areaLights.empty()) f |= kFeatureAreaLights;
-    for (const ObjectRef& o : out.objects) f |= materialFeatures(out.materials[o.material], s);
+    for (const ObjectRef& o : out.objects) f |= materialFeatures(out.materials[o.material], out.settings);
     if (s.indirectQuality >= 1 && s.colorBleeding > 0.0f) f |= kFeatureIndirect;
     if (!scene.meshes.empty()) f |= kFeatureMeshes;
     if (!scene.csgs.empty()) f |= kFeatureCsg;
     out.features = f;
 
-    for (const Csg& csg : scene.csgs) {
-        if (csg.tree && csg.material != kDefaultMaterial && usesTextures(scene.materials[csg.material]))
-            result.unsupported.push_back(csg.where.file + ":" + std::to_string(csg.where.line) +
-                                         ": CSG solids have no texture coordinates: the material's textures are ignored");
-    }
     return result;
 }
 

@@ -2,9 +2,6 @@
 // material indices, feature mask).
 #pragma once
 
-#include <string>
-#include <vector>
-
 #include "device/scene_arrays.h"
 #include "scene/scene.h"
 
@@ -12,9 +9,9 @@ namespace trazo {
 
 struct FlattenResult {
     SceneArrays arrays;
-    // One line per part of the scene that is read but not drawn as written (textures on a CSG solid or on
-    // a mesh without uvs); the rest of the scene renders.
-    std::vector<std::string> unsupported;
+    // What of the scene is read but not drawn as written (textures on an object without texture coordinates),
+    // at the line of its block; the rest of the scene renders.
+    Diagnostics warnings;
 };
 
 FlattenResult flatten(const Scene& scene);

@@ -30,6 +30,17 @@ struct MaterialData {
     int32_t diffuseTexture, specularTexture, emissiveTexture, normalTexture;  // into textures; -1 = none
 };
 
+// Whether any of the material's textures needs texture coordinates.
+TRAZO_HD bool materialHasTextures(const MaterialData& m) {
+    return m.diffuseTexture >= 0 || m.specularTexture >= 0 || m.emissiveTexture >= 0 || m.normalTexture >= 0;
+}
+
+// Whether the material reflects at all under these settings (a mirror or glossy lobe, before any depth limit).
+TRAZO_HD bool materialCanReflect(const MaterialData& m, const RenderSettings& s) {
+    return !isBlack(m.specular) && m.reflectionAmount > 0.0f && m.opacity > 0.0f && s.reflectionQuality >= 1 &&
+           s.reflectionSteps >= 1;
+}
+
 struct PointLightData {
     Vec3 position;
     Vec3 color;

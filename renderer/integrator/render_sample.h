@@ -34,8 +34,7 @@ TRAZO_HD void antialiasingPosition(uint32_t k, uint32_t s, uint32_t px, uint32_t
 }
 
 TRAZO_HD bool materialReflects(const MaterialData& m, const RenderSettings& s, uint32_t depth) {
-    return !isBlack(m.specular) && m.reflectionAmount > 0.0f && m.opacity > 0.0f && s.reflectionQuality >= 1 &&
-           depth < s.reflectionSteps && depth < kMaxReflectionDepth;
+    return materialCanReflect(m, s) && depth < s.reflectionSteps && depth < kMaxReflectionDepth;
 }
 
 // The reflected direction of this pass: the mirror direction, or one jittered stratum of the glossy cone

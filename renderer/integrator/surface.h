@@ -9,11 +9,6 @@
 
 namespace trazo {
 
-// Whether any of the material's textures needs texture coordinates.
-TRAZO_HD bool materialHasTextures(const MaterialData& m) {
-    return m.diffuseTexture >= 0 || m.specularTexture >= 0 || m.emissiveTexture >= 0 || m.normalTexture >= 0;
-}
-
 // wantUv: the material has textures (materialHasTextures); without, the uv and tangent frame (an atan2 and an
 // acos on a sphere) are skipped: applyTextures would not read them.
 TRAZO_HD SurfacePoint surfaceAt(const SceneView& scene, const ObjectRef& o, const SurfaceHit& hit, Vec3 p, bool wantUv) {

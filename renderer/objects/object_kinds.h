@@ -1,21 +1,22 @@
 // The kinds of object a scene holds, listed once (host and device). The list generates ObjectKind, the
 // shape arrays of SceneView and SceneArrays, visitObject's dispatch and flatten()'s loop over the host
-// scene; each kind's code lives in its own header (objects/<kind>.h). X(shape type, array, kind name).
+// scene; each kind's code lives in its own header (objects/<kind>.h). X(shape type, array, kind name, the
+// kind's block keyword in a scene file).
 #pragma once
 
 #include <cstdint>
 
 namespace trazo {
 
-#define TRAZO_OBJECT_KINDS(X)         \
-    X(SphereShape, spheres, Sphere)   \
-    X(BoxShape, boxes, Box)           \
-    X(CylinderShape, cylinders, Cylinder) \
-    X(CsgShape, csgs, Csg)            \
-    X(MeshShape, meshes, Mesh)
+#define TRAZO_OBJECT_KINDS(X)                       \
+    X(SphereShape, spheres, Sphere, "Sphere")       \
+    X(BoxShape, boxes, Box, "Box")                  \
+    X(CylinderShape, cylinders, Cylinder, "Cylinder") \
+    X(CsgShape, csgs, Csg, "CSG")                   \
+    X(MeshShape, meshes, Mesh, "Mesh")
 
 enum class ObjectKind : uint32_t {
-#define TRAZO_X(Shape, array, Kind) Kind,
+#define TRAZO_X(Shape, array, Kind, keyword) Kind,
     TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
 };

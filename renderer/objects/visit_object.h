@@ -16,7 +16,7 @@ namespace trazo {
 template <typename F>
 TRAZO_HD auto visitObject(const SceneView& scene, const ObjectRef& o, F&& f) -> decltype(f(scene.spheres[0])) {
     switch (o.kind) {
-#define TRAZO_X(Shape, array, Kind) \
+#define TRAZO_X(Shape, array, Kind, keyword) \
     case ObjectKind::Kind: return f(scene.array[o.index]);
         TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X

@@ -1,4 +1,4 @@
-// openBackend, describeBackend, printUnsupported: the start of a render's report on stderr.
+// openBackend, describeBackend: the start of a render's report on stderr.
 #include "render/render_start.h"
 
 #include <cstdio>
@@ -18,14 +18,6 @@ std::string describeBackend(const Backend& backend, const std::string& fallback)
     std::string text = backend.name() + " (" + backend.deviceName() + ")";
     if (!fallback.empty()) text += "; CUDA not used: " + fallback;
     return text;
-}
-
-void printUnsupported(const std::string& scenePath, const std::vector<std::string>& unsupported) {
-    if (unsupported.empty()) return;
-    std::string list;
-    for (const std::string& s : unsupported) list += (list.empty() ? "" : "; ") + s;
-    std::fprintf(stderr, "%s: warning: rendering without what this version cannot draw yet: %s\n",
-                 scenePath.c_str(), list.c_str());
 }
 
 }  // namespace trazo

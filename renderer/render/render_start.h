@@ -1,5 +1,5 @@
 // How a render starts, said alike by the CLI (--render) and the viewer (host): the backend it opens, or why it
-// cannot, and what of the scene it will not draw.
+// cannot.
 #pragma once
 
 #include <memory>
@@ -18,8 +18,5 @@ std::unique_ptr<Backend> openBackend(BackendChoice choice, unsigned threads, con
 
 // "NAME (DEVICE)", followed by "; CUDA not used: FALLBACK" when `fallback` is not empty.
 std::string describeBackend(const Backend& backend, const std::string& fallback);
-
-// "SCENE: warning: rendering without what this version cannot draw yet: A; B" on stderr; nothing when empty.
-void printUnsupported(const std::string& scenePath, const std::vector<std::string>& unsupported);
 
 }  // namespace trazo

@@ -1,5 +1,5 @@
-// Tests of the start of a render's report: the backend's line, the refusal of CUDA where there is none, and the
-// "not drawn" warning, as the CLI and the viewer both print them.
+// Tests of the start of a render's report: the backend's line and the refusal of CUDA where there is none, as the
+// CLI and the viewer both print them.
 #include "render/render_start.h"
 
 #include <gtest/gtest.h>
@@ -34,16 +34,6 @@ TEST(RenderStart, CudaWithoutADeviceIsRefusedWithItsReason) {
     ASSERT_TRUE(automatic);
     EXPECT_EQ(automatic->name(), "cpu");
     EXPECT_FALSE(fallback.empty());
-}
-
-TEST(RenderStart, ListsWhatIsNotDrawnOnOneLine) {
-    testing::internal::CaptureStderr();
-    printUnsupported("a.scene", {});
-    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
-    testing::internal::CaptureStderr();
-    printUnsupported("a.scene", {"first thing", "second"});
-    EXPECT_EQ(testing::internal::GetCapturedStderr(),
-              "a.scene: warning: rendering without what this version cannot draw yet: first thing; second\n");
 }
 
 }  // namespace

@@ -84,6 +84,11 @@ struct Material {
     float reflectionAngleDegrees = 0.0f;  // full cone angle; 0 = mirror
     float reflectionAmount = 0.0f;
     SourceLocation where;
+
+    bool usesTextures() const {
+        return diffuseTexture != kNoTexture || specularTexture != kNoTexture || emissiveTexture != kNoTexture ||
+               normalTexture != kNoTexture;
+    }
 };
 
 // One step of an ordered transform list, kept as written (the viewer and "save scene" need it).

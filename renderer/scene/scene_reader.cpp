@@ -192,14 +192,6 @@ private:
             mesh.source = resolveRelativePath(file_, mesh.source);
             mesh.data = loadNamedFile(mesh.source, d.sourceAt, meshes_, readObjText, kMaxTextFileBytes);
         }
-        if (mesh.data && !mesh.data->hasUvs && mesh.material >= 0) {
-            const Material& m = scene_.materials[size_t(mesh.material)];
-            if (m.diffuseTexture != kNoTexture || m.specularTexture != kNoTexture ||
-                m.emissiveTexture != kNoTexture || m.normalTexture != kNoTexture) {
-                diags_.warning(block.where, "mesh '" + mesh.source + "' has no texture coordinates; the textures of "
-                                            "material '" + m.name + "' are ignored for it");
-            }
-        }
         scene_.meshes.push_back(std::move(mesh));
     }
 

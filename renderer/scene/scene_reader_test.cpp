@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "device/flatten.h"
 #include "fetched_assets.h"
 #include "scene/csg_reader.h"
 #include "test_paths.h"
@@ -434,19 +435,26 @@ TEST(SceneReader, RelativePathsResolveAgainstTheNamingFile) {
     EXPECT_TRUE(s.csgs.at(0).tree);
 }
 
-TEST(SceneReader, MeshWithoutUvsWarnsOnceWhenItsMaterialHasTextures) {
+// The warning comes from flatten(), once per object at its block's line, in the order of the kinds; the reader
+// has nothing to say about it.
+TEST(SceneReader, ObjectsWithoutUvsAreWarnedOnceWhenTheirMaterialHasTextures) {
     const std::string dir = test::tempPath("nouvs");
     writePng(dir + "/tex.png");
     writeFile(dir + "/plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    writeFile(dir + "/tree.csg", kTinyCsg);
     Result r;
     r.scene = readSceneText(
         "Texture {\n Name t\n Source \"tex.png\"\n}\nMaterial {\n Name m\n DiffuseTexture t\n NormalTexture t\n}\n"
-        "Mesh {\n Material m\n Source \"plain.obj\"\n}\n",
+        "Mesh {\n Material m\n Source \"plain.obj\"\n}\nCSG {\n Material m\n Source \"tree.csg\"\n}\n"
+        "Sphere {\n Material m\n}\n",
         dir + "/u.scene", r.diags);
-    EXPECT_FALSE(r.diags.hasErrors());
-    EXPECT_EQ(listed(r.diags), dir + "/u.scene:10: warning: mesh '" + dir +
-                                   "/plain.obj' has no texture coordinates; the textures of material 'm' are "
-                                   "ignored for it\n");
+    EXPECT_EQ(listed(r.diags), "");
+    const FlattenResult flat = flatten(r.scene);
+    EXPECT_EQ(listed(flat.warnings), dir + "/u.scene:14: warning: CSG '" + dir +
+                                         "/tree.csg' has no texture coordinates; the textures of material 'm' are "
+                                         "ignored for it\n" + dir + "/u.scene:10: warning: Mesh '" + dir +
+                                         "/plain.obj' has no texture coordinates; the textures of material 'm' are "
+                                         "ignored for it\n");
 }
 
 TEST(SceneReader, ErrorsInsideNamedFilesCarryTheirOwnFileAndLine) {
