@@ -9,7 +9,7 @@
 #include "device/scene_arrays.h"
 #include "integrator/frame_params.h"
 #include "integrator/ray_query.h"
-#include "render/accumulation.h"
+#include "core/accumulation.h"
 
 namespace trazo {
 

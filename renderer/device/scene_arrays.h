@@ -7,13 +7,9 @@
 
 #include "accel/wide_bvh_node.h"
 #include "core/vec3.h"
-#include "objects/box.h"
-#include "objects/csg.h"
-#include "objects/cylinder.h"
-#include "objects/mesh.h"
 #include "objects/rectangle.h"
 #include "objects/scene_view.h"
-#include "objects/sphere.h"
+#include "objects/visit_object.h"  // every object kind's header
 #include "shading/texture.h"
 
 namespace trazo {

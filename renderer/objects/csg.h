@@ -156,7 +156,6 @@ TRAZO_HD_CALL bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, c
     // Bytes: every start, count and node index is below 2·kCsgMaxLeaves (less stack on a GPU thread).
     uint8_t listStart[kCsgMaxLeaves + 1], listCount[kCsgMaxLeaves + 1];
     int lists = 0, used = 0;
-    const BoxRay boxRay = makeBoxRay(ray);
     for (uint32_t k = 0; k < csg.nodeCount; ++k) {
         const CsgNodeData& node = nodes[csg.firstNode + k];
         if (node.op == CsgOp::Leaf) {
@@ -172,8 +171,10 @@ TRAZO_HD_CALL bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, c
             uint32_t skippedRoot = 0xffffffffu;
             for (int i = chainLength - 1; i >= 0; --i) {
                 const CsgNodeData& c = nodes[csg.firstNode + chain[i]];
+                // The inverse direction is recomputed per test rather than held through the sweep: registers
+                // are what a GPU thread running a CSG solid is short of.
                 float tEntry;
-                if (!intersectBounds(boxRay, c.boundsMin, c.boundsMax, 0.0f, tMax, tEntry)) {
+                if (!intersectBounds(makeBoxRay(ray), c.boundsMin, c.boundsMax, 0.0f, tMax, tEntry)) {
                     skippedRoot = chain[i];
                     break;
                 }

@@ -12,12 +12,10 @@
 
 namespace trazo {
 
-struct SphereShape;
-struct BoxShape;
-struct CylinderShape;
-struct CsgShape;
+#define TRAZO_X(Shape, ...) struct Shape;
+TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
 struct CsgNodeData;
-struct MeshShape;
 struct MeshTriangle;
 struct TriangleCorners;
 struct WideBvhNode;

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/accumulation.h"
+#include "core/accumulation.h"
 
 namespace trazo {
 

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "render/accumulation.h"
+#include "core/accumulation.h"
 
 namespace trazo {
 

@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "render/accumulation.h"
+#include "core/accumulation.h"
 
 namespace trazo {
 class CudaGlDisplay;

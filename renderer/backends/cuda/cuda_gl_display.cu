@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "render/accumulation.h"
+#include "core/accumulation.h"
 
 namespace trazo {
 

@@ -6,7 +6,7 @@
 #include <cuda_runtime.h>
 
 #include "integrator/sample_variants.h"
-#include "render/accumulation.h"
+#include "core/accumulation.h"
 
 namespace trazo {
 

@@ -1,5 +1,5 @@
 // Tests of AccumPixel: weighted sums into both halves, and the estimate every image is made of.
-#include "render/accumulation.h"
+#include "core/accumulation.h"
 
 #include <gtest/gtest.h>
 
