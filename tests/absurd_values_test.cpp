@@ -348,8 +348,8 @@ void expectRenders(const GeometryCase& c, double maxSeconds = 20) {
 }
 
 // Objects far below a pixel are not seen; the camera inside a huge sphere, cylinder or box sees its lit inside
-// (the light is inside too; a box of 1e13 needs the inverse taken in double). 1e-50 rounds to 0 in float: a
-// radius of zero draws nothing.
+// up to the bounds of docs/LIMITS.md (the light is inside too; a box of 1e13 needs the inverse taken in
+// double). 1e-50 rounds to 0 in float: a radius of zero draws nothing.
 TEST(AbsurdGeometry, RadiiAndScalesFrom1eMinus30To1e19Render) {
     std::vector<GeometryCase> cases;
     for (const char* tiny : {"1e-30", "1e-10"}) {
@@ -371,15 +371,20 @@ TEST(AbsurdGeometry, RadiiAndScalesFrom1eMinus30To1e19Render) {
         const std::string s(huge);
         cases.push_back({"SphereRadius" + s, geometryScene(block("Sphere", "    Radius " + s + "\n")), Expect::Lit});
     }
-    for (const char* huge : {"1e10", "1e13"}) {
+    for (const char* huge : {"1e10", "1e13", "6e18"}) {
         const std::string s(huge);
         cases.push_back({"BoxScale" + s, geometryScene(block("Box", "    Scale " + s + " " + s + " " + s + "\n")),
                          Expect::Lit});
     }
-    cases.push_back({"CylinderRadius1e10",
-                     geometryScene(block("Cylinder", "    Radius 1e10\n    Base 0 -1e10 0\n    Height 2e10\n")),
-                     Expect::Lit});
+    for (const char* huge : {"1e10", "1e19"}) {
+        const std::string s(huge);
+        cases.push_back({"CylinderRadius" + s,
+                         geometryScene(block("Cylinder", "    Radius " + s + "\n    Base 0 -" + s + " 0\n    Height 2" +
+                                                             s.substr(1) + "\n")),
+                         Expect::Lit});
+    }
     cases.push_back({"MeshScale1e5", geometryScene(block("Mesh", squareObj() + "    Scale 1e5 1e5 1\n")), Expect::Lit});
+    cases.push_back({"MeshScale4e8", geometryScene(block("Mesh", squareObj() + "    Scale 4e8 4e8 4e8\n")), Expect::Lit});
     for (const GeometryCase& c : cases) expectRenders(c);
 }
 
@@ -427,6 +432,20 @@ TEST(AbsurdGeometry, TenThousandObjectsRenderQuickly) {
     }
 }
 
+// Renders `c`, which must be refused: status 2 within 20 s, `where` (the file's name and line) and `reason` in
+// the message, no image.
+void expectRefused(const GeometryCase& c, const std::string& where, const std::string& reason) {
+    const std::string scene = writeScene("refused_" + c.name + ".scene", c.scene);
+    const std::string out = tempPath("refused.pfm");
+    fs::remove(out);
+    const Limited r = runLimited(renderArgs(scene, out, {}), 20);
+    EXPECT_EQ(r.signal, 0) << c.name << "\n" << r.errors;
+    EXPECT_EQ(r.status, 2) << c.name << "\n" << r.errors;
+    EXPECT_NE(r.errors.find("refused_" + c.name + ".scene:" + where), std::string::npos) << r.errors;
+    EXPECT_NE(r.errors.find(reason), std::string::npos) << r.errors;
+    EXPECT_FALSE(fs::exists(out)) << c.name;
+}
+
 // Scales that are each non-zero as written but compose to a map float cannot hold or invert (1e-50 rounds to
 // 0; two 1e-30 scales make 1e-60; two 1e30 scales overflow) are refused at the block's line.
 TEST(AbsurdGeometry, TransformsThatFloatCannotInvertAreRefusedWithTheirLine) {
@@ -437,79 +456,78 @@ TEST(AbsurdGeometry, TransformsThatFloatCannotInvertAreRefusedWithTheirLine) {
         {"MeshScalesOverflow", geometryScene(block("Mesh", squareObj() + "    Scale 1e30 1 1\n    Scale 1e30 1 1\n")),
          Expect::Anything},
     };
-    for (const GeometryCase& c : cases) {
-        const std::string scene = writeScene("refused_" + c.name + ".scene", c.scene);
-        const std::string out = tempPath("refused.pfm");
-        fs::remove(out);
-        const Limited r = runLimited(renderArgs(scene, out, {}), 20);
-        EXPECT_EQ(r.signal, 0) << c.name << "\n" << r.errors;
-        EXPECT_EQ(r.status, 2) << c.name << "\n" << r.errors;
-        EXPECT_NE(r.errors.find("refused_" + c.name + ".scene:"), std::string::npos) << r.errors;
-        EXPECT_NE(r.errors.find("transforms compose to a map single precision cannot hold or invert"),
-                  std::string::npos) << r.errors;
-        EXPECT_FALSE(fs::exists(out)) << c.name;
-    }
+    for (const GeometryCase& c : cases)
+        expectRefused(c, "20:", "transforms compose to a map single precision cannot hold or invert");
 }
 
-// Open findings: each fix lies in code being refactored elsewhere, so it waits as a patch under
-// /work/fuzzlogs/ (named in the skip); the cases below are what the patch must make pass.
-TEST(AbsurdGeometry, PendingHugeRadii) {
-    GTEST_SKIP() << "radius² overflows float in intersectSphere/intersectCylinder: "
-                    "/work/fuzzlogs/absurd-sphere-radius-1e20.patch, /work/fuzzlogs/absurd-cylinder-radius-1e20.patch";
+// Sizes whose squares leave float are refused where they are written (docs/LIMITS.md, Geometry): a radius
+// above 1e19 (r² in the sphere's and cylinder's quadratics), a box scaled beyond ~6e18 (its face normal,
+// of squared length 1/scale²), a mesh spanning more than 1e9 (its triangles' cross products, squared).
+// Rendering them would cost every ordinary ray a rescaling test in the intersection kernels.
+TEST(AbsurdGeometry, SizesWhoseSquaresLeaveFloatAreRefusedWithTheirLine) {
     for (const char* huge : {"1e20", "1e30"}) {
         const std::string s(huge);
-        expectRenders({"SphereRadius" + s, geometryScene(block("Sphere", "    Radius " + s + "\n")), Expect::Lit});
-        expectRenders({"CylinderRadius" + s,
+        expectRefused({"SphereRadius" + s, geometryScene(block("Sphere", "    Radius " + s + "\n")), Expect::Anything},
+                      "23:12:", "Radius must be at most 1e19");
+        expectRefused({"CylinderRadius" + s,
                        geometryScene(block("Cylinder", "    Radius " + s + "\n    Base 0 -" + s + " 0\n    Height " + s + "\n")),
-                       Expect::Lit});
+                       Expect::Anything},
+                      "23:12:", "Radius must be at most 1e19");
+        expectRefused({"BoxScale" + s, geometryScene(block("Box", "    Scale " + s + " " + s + " " + s + "\n")),
+                       Expect::Anything},
+                      "20:", "transforms scale an axis by more than about 6e18");
     }
-}
-
-TEST(AbsurdGeometry, PendingHugeBox) {
-    GTEST_SKIP() << "the box normal normalize(row) underflows for scales beyond ~1e19 (geometry/intersect_box.h): "
-                    "/work/fuzzlogs/absurd-box-scale-1e30.patch";
-    for (const char* huge : {"1e20", "1e30"}) {
-        const std::string s(huge);
-        expectRenders({"BoxScale" + s, geometryScene(block("Box", "    Scale " + s + " " + s + " " + s + "\n")), Expect::Lit});
-    }
-}
-
-TEST(AbsurdGeometry, PendingHugeMesh) {
-    GTEST_SKIP() << "computed normals overflow in normalizeOr (device/flatten_mesh.cpp): "
-                    "/work/fuzzlogs/absurd-mesh-scale-1e10.patch";
     for (const char* huge : {"1e10", "1e30"})
-        expectRenders({std::string("MeshScale") + huge,
-                       geometryScene(block("Mesh", squareObj() + "    Scale " + huge + " " + huge + " 1\n")), Expect::Lit});
+        expectRefused({std::string("MeshScale") + huge,
+                       geometryScene(block("Mesh", squareObj() + "    Scale " + huge + " " + huge + " 1\n")),
+                       Expect::Anything},
+                      "20:", "a mesh may span at most 1e9");
 }
 
-TEST(AbsurdGeometry, PendingLightFarAway) {
-    GTEST_SKIP() << "length(x − p) overflows in shadeFromPoint (integrator/direct_light.h): "
-                    "/work/fuzzlogs/absurd-light-1e30.patch";
-    // The front of the unit sphere, seen from +z and lit from +z (no falloff: SPEC §5), is lit at the centre.
-    for (const char* light : {"PointLight\n{\n    Position 0 0 1e30\n}\n",
-                              "AreaLight\n{\n    Position 0 0 1e30\n    Direction 0 0 -1\n}\n"}) {
-        const std::string scene = writeScene("far_light.scene", geometryScene(block("Sphere", ""), "0 0 5", light));
-        const std::string out = tempPath("far_light.pfm");
-        const Limited r = runLimited(renderArgs(scene, out, {}), 20);
-        ASSERT_EQ(r.status, 0) << r.errors;
-        const FloatImage image = readPfm(out);
-        ASSERT_EQ(image.rgb.size(), 768u);
-        EXPECT_GT(image.rgb[3 * (8 * 16 + 8)], 0.5f) << light;
+// Lights have no distance falloff (SPEC §5): a light 1e18 away, the bound, lights the front of the unit sphere
+// seen from +z with N·L ≈ 1 at its centre, as one 1e6 away does. One 1e30 away is refused: its squared distance
+// overflows float, and lighting it would cost every shadow ray a rescaling test.
+TEST(AbsurdGeometry, FarLightsLightUpToTheirBoundAndAreRefusedBeyond) {
+    const std::string sphere = block("Sphere", "");
+    for (const char* kind : {"PointLight", "AreaLight"}) {
+        const std::string k(kind);
+        auto light = [&](const std::string& z) {
+            return k + "\n{\n    Position 0 0 " + z + "\n" + (k == "AreaLight" ? "    Direction 0 0 -1\n" : "") + "}\n";
+        };
+        std::vector<float> centre;  // the centre pixel's red, for the light at 1e6 and at 1e18
+        for (const char* z : {"1e6", "1e18"}) {
+            const std::string scene = writeScene("far_light.scene", geometryScene(sphere, "0 0 5", light(z)));
+            const std::string out = tempPath("far_light.pfm");
+            fs::remove(out);
+            const Limited r = runLimited(renderArgs(scene, out, {}), 20);
+            ASSERT_EQ(r.status, 0) << r.errors;
+            const FloatImage image = readPfm(out);
+            ASSERT_EQ(image.rgb.size(), 768u);
+            for (const float x : image.rgb) ASSERT_TRUE(std::isfinite(x)) << k << " at " << z;
+            centre.push_back(image.rgb[3 * (8 * 16 + 8)]);
+        }
+        EXPECT_GT(centre[1], 0.5f) << k;
+        EXPECT_NEAR(centre[1], centre[0], 1e-3f * centre[0]) << k << ": N·L ≈ 1 from 1e6 and from 1e18 away";
+        expectRefused({k + "1e30", geometryScene(sphere, "0 0 5", light("1e30")), Expect::Anything}, "18:18:",
+                      "Position must be within 1e18 of the origin");
     }
 }
 
-TEST(AbsurdGeometry, PendingColoursNearFloatsMaximum) {
-    GTEST_SKIP() << "a sample's sums overflow to inf; the fix is a reader bound in block_table.cpp: "
-                    "/work/fuzzlogs/absurd-huge-colour.patch";
-    const std::string scene = writeScene(
-        "huge_colour.scene", "SceneSettings\n{\n    RenderWidth 16\n    RenderHeight 16\n    Antialiasing 16\n"
-                             "    BackgroundColor 3e38 3e38 3e38\n}\nSphere\n{\n}\nPointLight\n{\n}\n");
-    const std::string out = tempPath("huge_colour.pfm");
-    fs::remove(out);
-    const Limited r = runLimited(renderArgs(scene, out, {}), 20);
-    EXPECT_EQ(r.status, 2) << r.errors;
-    EXPECT_NE(r.errors.find("huge_colour.scene:5:"), std::string::npos) << r.errors;
-    EXPECT_FALSE(fs::exists(out));
+// Colours near float's maximum would sum to inf in a sample (16 antialiasing positions of 3e38): refused at
+// the line, as is any component beyond ±1e12, where a light's colour times a material's through the
+// Cook–Torrance peak and 2^24 summed samples stays inside float.
+TEST(AbsurdGeometry, ColoursBeyondTheirBoundAreRefusedWithTheirLine) {
+    const std::string settings = "SceneSettings\n{\n    RenderWidth 16\n    RenderHeight 16\n    Antialiasing 16\n";
+    expectRefused({"BackgroundColour3e38", settings + "    BackgroundColor 3e38 3e38 3e38\n}\nSphere\n{\n}\nPointLight\n{\n}\n",
+                   Expect::Anything},
+                  "6:21:", "BackgroundColor components must be within ±1e12");
+    expectRefused({"LightColour1e13", geometryScene(block("Sphere", ""), "0 0 5", "PointLight\n{\n    Color 1e13 1 1\n}\n"),
+                   Expect::Anything},
+                  "18:11:", "Color components must be within ±1e12");
+    // At the bound, a white sphere under a light of 1e12 renders finite, and lit.
+    expectRenders({"LightColour1e12",
+                   geometryScene(block("Sphere", "    Radius 10\n"), "0 0 5", "PointLight\n{\n    Color 1e12 1e12 1e12\n}\n"),
+                   Expect::Lit});
 }
 
 }  // namespace

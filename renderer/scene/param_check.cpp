@@ -94,6 +94,29 @@ bool checkRange(const ParamInfo& info, const ParameterLine& line, size_t offset,
                     return diags.error(at(i), name + " must be between 0 and 180 degrees, got " + text(i)), false;
                 }
                 break;
+            case C::Radius:
+                if (!(x > 0)) return diags.error(at(i), name + " must be positive, got " + text(i)), false;
+                if (float(x) > kMaxRadius) {  // as stored: "1e19" is kMaxRadius
+                    return diags.error(at(i), name + " must be at most 1e19 (its square must stay inside single "
+                                                     "precision), got " + text(i)),
+                           false;
+                }
+                break;
+            case C::LightPosition:
+                if (std::fabs(float(x)) > kMaxLightCoordinate) {
+                    return diags.error(at(i), name + " must be within 1e18 of the origin in each coordinate (the "
+                                                     "squared distance to the light must stay inside single "
+                                                     "precision), got " + text(i)),
+                           false;
+                }
+                break;
+            case C::Colour:
+                if (std::fabs(float(x)) > kMaxColour) {
+                    return diags.error(at(i), name + " components must be within ±1e12 (so that a pixel's sums stay "
+                                                     "inside single precision), got " + text(i)),
+                           false;
+                }
+                break;
             default: break;
         }
     }
@@ -226,6 +249,9 @@ ValueRange editRange(const ParamInfo& info) {
         case C::StrataQuality: return {0, kMaxStrataQuality};
         case C::ReflectionDepth: return {0, double(kMaxReflectionSteps)};
         case C::GridCells: return {1, kMaxGridSide};
+        case C::Radius: return {abovePositive, double(kMaxRadius)};
+        case C::LightPosition: return {-double(kMaxLightCoordinate), double(kMaxLightCoordinate)};
+        case C::Colour: return {-double(kMaxColour), double(kMaxColour)};
         case C::None:
         case C::NonZeroVector:
         case C::RotationAxis:

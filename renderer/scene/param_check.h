@@ -34,7 +34,20 @@ enum class ValueCheck {
     StrataQuality,      // q: 0 … kMaxStrataQuality (2·q² strata)
     ReflectionDepth,    // 0 … kMaxReflectionSteps
     GridCells,          // nx ny: each >= 1, nx·ny ≤ kMaxGridStrata
+    // Magnitudes whose squares or products single precision must hold (docs/LIMITS.md, Geometry).
+    Radius,             // 0 < r ≤ kMaxRadius
+    LightPosition,      // every coordinate within ±kMaxLightCoordinate
+    Colour,             // every component within ±kMaxColour
 };
+
+// r² ≤ 1e38 inside float's 3.4e38: the sphere's and cylinder's quadratics square the radius.
+constexpr float kMaxRadius = 1e19f;
+// A light within 1e18 of the origin in each coordinate is less than 1.8e19 from any point within 1e19 of
+// it, so the squared distance to the light stays inside float.
+constexpr float kMaxLightCoordinate = 1e18f;
+// A light's colour times a material's (1e24), times the Cook–Torrance peak (≤ 3.2e3) and 2^24 samples
+// summed in float (2^20 strata × 16 antialiasing positions), is 5.4e34: four decades inside float.
+constexpr float kMaxColour = 1e12f;
 
 // How the viewer shows a Real parameter (its widget); the reader treats them all as numbers.
 enum class ValueUnit { None, Color, Degrees, Radians };

@@ -80,7 +80,7 @@ ParamSpec<Target> field(std::string_view name, Field Target::*member, std::strin
 
 template <class Target>
 ParamSpec<Target> colour(std::string_view name, Vec3 Target::*member, std::string_view doc) {
-    return field(name, member, doc, ValueCheck::None, ValueUnit::Color);
+    return field(name, member, doc, ValueCheck::Colour, ValueUnit::Color);
 }
 
 // The rows of a struct nested in `Outer` (a shape inside its reader's draft), as rows of `Outer`.

@@ -2,11 +2,15 @@
 // scene names (.obj, .csg, images) read relative to the scene's folder.
 #include "scene/scene_reader.h"
 
+#include <algorithm>
+#include <cfloat>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include "core/aabb.h"
 #include "io/text_file.h"
 #include "scene/block_lexer.h"
 #include "scene/block_table.h"
@@ -17,6 +21,8 @@
 
 namespace trazo {
 namespace {
+
+constexpr double kMaxMeshExtent = 1e9;  // docs/LIMITS.md, Geometry
 
 // Where a texture or material name is first declared: used to tell "declared later" from "never declared".
 struct Declaration {
@@ -69,7 +75,8 @@ private:
             scene_.spheres.push_back(readObject(block, index, sphereTable()).object);
         } else if (id == "Box") {
             scene_.boxes.push_back(readObject(block, index, boxTable()).object);
-            checkInvertible(scene_.boxes.back().transforms, block);
+            if (checkInvertible(scene_.boxes.back().transforms, block))
+                checkBoxNormals(scene_.boxes.back().transforms, block);
         } else if (id == "Cylinder") {
             scene_.cylinders.push_back(readObject(block, index, cylinderTable()).object);
         } else if (id == "CSG") {
@@ -172,8 +179,8 @@ private:
 
     // Each Scale is non-zero as written, but a value below 1e-45 rounds to 0 in float and scales multiply:
     // a composed map that float cannot invert (or hold) would reach the renderer as NaN.
-    void checkInvertible(const std::vector<TransformStep>& steps, const Block& block) {
-        if (steps.empty()) return;
+    bool checkInvertible(const std::vector<TransformStep>& steps, const Block& block) {
+        if (steps.empty()) return true;
         const Affine3 m = composeTransforms(steps);
         const Affine3 inv = inverse(m);
         bool finite = isFinite(m.translation) && isFinite(inv.translation);
@@ -182,16 +189,54 @@ private:
             diags_.error(block.where, block.identifier + ": its transforms compose to a map single precision "
                                       "cannot hold or invert (scales multiply past float's range, about 1e±38)");
         }
+        return finite;
+    }
+
+    // A box's face normal is normalize(row of objectFromWorld): that row's squared length, 1/scale², must be
+    // a normal float (with an ulp's margin for the device's fused arithmetic), or the normal is inf or NaN.
+    void checkBoxNormals(const std::vector<TransformStep>& steps, const Block& block) {
+        const Affine3 inv = inverse(composeTransforms(steps));
+        for (int i = 0; i < 3; ++i) {
+            if (!(dot(inv.row[i], inv.row[i]) >= 2.0f * FLT_MIN)) {
+                diags_.error(block.where, block.identifier + ": its transforms scale an axis by more than about "
+                                          "6e18, where its face normals (of squared length 1/scale²) leave "
+                                          "single precision");
+                return;
+            }
+        }
+    }
+
+    // A mesh's kernel normal is cross(p1 − p0, p2 − p0), squared to normalise: it overflows float for triangles
+    // beyond about 2.4e9 a side. Measured on the transformed bounding box (a rotation may widen it by √3).
+    void checkMeshExtent(const Mesh& mesh, const Block& block) {
+        Aabb object;
+        for (const Vec3& p : mesh.data->positions) object.grow(p);
+        if (object.empty()) return;
+        const Affine3 m = composeTransforms(mesh.transforms);
+        Aabb world;
+        for (int c = 0; c < 8; ++c)
+            world.grow(m.applyToPoint(Vec3((c & 1) ? object.max.x : object.min.x, (c & 2) ? object.max.y : object.min.y,
+                                           (c & 4) ? object.max.z : object.min.z)));
+        const double extent = std::max({double(world.max.x) - world.min.x, double(world.max.y) - world.min.y,
+                                        double(world.max.z) - world.min.z});
+        if (!(extent <= kMaxMeshExtent)) {
+            char spans[32];
+            std::snprintf(spans, sizeof spans, "%.3g", extent);
+            diags_.error(block.where, block.identifier + ": '" + mesh.source + "' spans " + spans +
+                                      " after its transforms; a mesh may span at most 1e9, where its triangles' "
+                                      "normals still square inside single precision");
+        }
     }
 
     void readMesh(const Block& block, size_t index) {
         ObjectDraft<Mesh> d = readObject(block, index, meshTable());
         Mesh& mesh = d.object;
-        checkInvertible(mesh.transforms, block);
+        const bool invertible = checkInvertible(mesh.transforms, block);
         if (!mesh.source.empty()) {
             mesh.source = resolveRelativePath(file_, mesh.source);
             mesh.data = loadNamedFile(mesh.source, d.sourceAt, meshes_, readObjText, kMaxTextFileBytes);
         }
+        if (mesh.data && invertible) checkMeshExtent(mesh, block);
         scene_.meshes.push_back(std::move(mesh));
     }
 

@@ -58,7 +58,7 @@ template <class Shape>
 std::vector<ParamSpec<Shape>> sphereRows() {
     return {
         field("Center", &Shape::center, "centre"),
-        field("Radius", &Shape::radius, "radius", Check::Positive),
+        field("Radius", &Shape::radius, "radius", Check::Radius),
     };
 }
 
@@ -69,7 +69,7 @@ std::vector<ParamSpec<Shape>> cylinderRows() {
         field("Base", &Shape::base, "centre of the bottom cap"),
         field("Axis", &Shape::axis, "direction from the bottom cap to the top", Check::NonZeroVector),
         field("Height", &Shape::height, "length along the axis", Check::Positive),
-        field("Radius", &Shape::radius, "radius", Check::Positive),
+        field("Radius", &Shape::radius, "radius", Check::Radius),
     };
 }
 
@@ -255,7 +255,7 @@ std::span<const ParamSpec<ObjectDraft<Mesh>>> meshTable() {
 
 std::span<const ParamSpec<PointLight>> pointLightTable() {
     static const std::vector<ParamSpec<PointLight>> rows = withDefaults<PointLight>({
-        field("Position", &PointLight::position, "position"),
+        field("Position", &PointLight::position, "position", Check::LightPosition),
         colour("Color", &PointLight::color, "colour and intensity (no falloff)"),
     });
     return rows;
@@ -264,7 +264,7 @@ std::span<const ParamSpec<PointLight>> pointLightTable() {
 std::span<const ParamSpec<AreaLight>> areaLightTable() {
     static const std::vector<ParamSpec<AreaLight>> rows = withDefaults<AreaLight>({
         colour("Color", &AreaLight::color, "colour and intensity (no falloff)"),
-        field("Position", &AreaLight::position, "centre of the rectangle"),
+        field("Position", &AreaLight::position, "centre of the rectangle", Check::LightPosition),
         field("Direction", &AreaLight::direction, "normal of the rectangle", Check::NonZeroVector),
         field("RollAngle", &AreaLight::rollAngle, "turn of the rectangle about its normal, radians", Check::None,
               ValueUnit::Radians),

@@ -146,7 +146,8 @@ TEST(SceneWriter, EditedFieldsAndAwkwardValuesSurvive) {
         " Translation 1 0 0\n Rotation 1 1 0 -1e-7\n}\nCylinder {\n Material glass\n}\nPointLight {\n}\n",
         test::tempPath("edited") + "/in.scene", diags);
     ASSERT_FALSE(diags.hasErrors()) << listed(diags);
-    scene.settings.backgroundColor = Vec3(0.1f, 1e-20f, 3.4e38f);
+    scene.settings.backgroundColor = Vec3(0.1f, 1e-20f, 1e12f);  // 1e12: the largest colour the reader takes
+    scene.spheres[0].center = Vec3(0.0f, -3.4e38f, 1e-30f);
     scene.settings.antialiasing = 16;
     scene.camera.fovDegrees = 33.333333f;
     scene.materials[0].opacity = 0.1f;
