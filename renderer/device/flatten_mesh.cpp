@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <thread>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -15,6 +14,7 @@
 
 #include "accel/bvh_build.h"
 #include "accel/collapse_bvh.h"
+#include "core/thread_pool.h"
 #include "scene/obj_reader.h"
 
 namespace trazo {
@@ -87,19 +87,17 @@ std::vector<uint32_t> numberDistinctCorners(const std::vector<MeshData::Corner>&
     return number;
 }
 
-// Runs fn(begin, end) over [0, n) in one contiguous chunk per thread (all cores); fn must only write what
-// its own indices own.
+// Runs fn(begin, end) over [0, n) in one contiguous chunk per thread of the shared pool (one thread below
+// 16384 items, where starting the others costs more than it saves); fn must only write what its own indices own.
 template <typename Fn>
 void parallelChunks(size_t n, Fn&& fn) {
-    const unsigned threads = n >= 16384 ? std::max(1u, std::thread::hardware_concurrency()) : 1u;
-    const size_t chunk = (n + threads - 1) / threads;
-    std::vector<std::thread> pool;
-    for (unsigned p = 1; p < threads; ++p) {
-        const size_t b = std::min(n, p * chunk), e = std::min(n, (p + 1) * chunk);
-        if (b < e) pool.emplace_back([&fn, b, e] { fn(b, e); });
+    ThreadPool& pool = sharedThreadPool();
+    const unsigned threads = n >= 16384 ? pool.threadCount() : 1u;
+    if (threads == 1) {
+        fn(size_t(0), n);
+        return;
     }
-    fn(0, std::min(n, chunk));
-    for (std::thread& t : pool) t.join();
+    pool.parallelFor(n, (n + threads - 1) / threads, fn);
 }
 
 // What the triangles of one mesh share, computed once: world positions, smooth normals per position (when
