@@ -148,7 +148,7 @@ FlattenResult flatten(const Scene& scene) {
     MaterialTable materials(scene);
     const SceneSettings& s = scene.settings;
 
-    // Every object of every kind, kind by kind in the order of objects/object_kinds.h.
+    // Every object of every kind, kind by kind in the order of scene/object_kind_list.h.
     auto add = [&](ObjectKind kind, const char* keyword, const auto& object, const auto& shapes) {
         uint32_t index = 0;
         if (!appendObject(object, out, index)) return;

@@ -1,19 +1,12 @@
-// The kinds of object a scene holds, listed once (host and device). The list generates ObjectKind, the
-// shape arrays of SceneView and SceneArrays, visitObject's dispatch and flatten()'s loop over the host
-// scene; each kind's code lives in its own header (objects/<kind>.h). X(shape type, array, kind name, the
-// kind's block keyword in a scene file).
+// ObjectKind and ObjectRef: which kind of object (scene/object_kind_list.h) an entry of the flattened scene is,
+// and where its shape and material are (host and device).
 #pragma once
 
 #include <cstdint>
 
-namespace trazo {
+#include "scene/object_kind_list.h"
 
-#define TRAZO_OBJECT_KINDS(X)                       \
-    X(SphereShape, spheres, Sphere, "Sphere")       \
-    X(BoxShape, boxes, Box, "Box")                  \
-    X(CylinderShape, cylinders, Cylinder, "Cylinder") \
-    X(CsgShape, csgs, Csg, "CSG")                   \
-    X(MeshShape, meshes, Mesh, "Mesh")
+namespace trazo {
 
 enum class ObjectKind : uint32_t {
 #define TRAZO_X(Shape, array, Kind, keyword) Kind,

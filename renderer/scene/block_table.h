@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "scene/did_you_mean.h"
+#include "scene/object_kind_list.h"
 #include "scene/param_spec.h"
 #include "scene/scene.h"
 
@@ -69,11 +70,14 @@ std::span<const ParamSpec<SceneSettings>> sceneSettingsTable();
 std::span<const ParamSpec<Camera>> cameraTable();
 std::span<const ParamSpec<TextureDraft>> textureTable();
 std::span<const ParamSpec<MaterialDraft>> materialTable();
-std::span<const ParamSpec<ObjectDraft<Sphere>>> sphereTable();
-std::span<const ParamSpec<ObjectDraft<Box>>> boxTable();
-std::span<const ParamSpec<ObjectDraft<Cylinder>>> cylinderTable();
-std::span<const ParamSpec<ObjectDraft<Csg>>> csgTable();
-std::span<const ParamSpec<ObjectDraft<Mesh>>> meshTable();
+// The table of each object kind's block (scene/object_kind_list.h): objectTable<Sphere>(), objectTable<Mesh>(), ...
+template <class T>
+std::span<const ParamSpec<ObjectDraft<T>>> objectTable();
+#define TRAZO_X(Shape, array, Kind, keyword) \
+    template <>                              \
+    std::span<const ParamSpec<ObjectDraft<Kind>>> objectTable<Kind>();
+TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
 std::span<const ParamSpec<PointLight>> pointLightTable();
 std::span<const ParamSpec<AreaLight>> areaLightTable();
 

@@ -276,11 +276,9 @@ TEST(BlockTable, EveryRowWritesWhatItReadsBack) {
     expectEveryRowReadsBack(cameraTable());
     expectEveryRowReadsBack(textureTable());
     expectEveryRowReadsBack(materialTable());
-    expectEveryRowReadsBack(sphereTable());
-    expectEveryRowReadsBack(boxTable());
-    expectEveryRowReadsBack(cylinderTable());
-    expectEveryRowReadsBack(csgTable());
-    expectEveryRowReadsBack(meshTable());
+#define TRAZO_X(Shape, array, Kind, keyword) expectEveryRowReadsBack(objectTable<Kind>());
+    TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
     expectEveryRowReadsBack(pointLightTable());
     expectEveryRowReadsBack(areaLightTable());
     expectEveryRowReadsBack(csgSphereTable());
@@ -316,13 +314,13 @@ TEST(BlockTable, ShapeAndTransformRowsAreSharedWithCsgNodes) {
         return n;
     };
     const std::vector<std::string_view> transforms = {"Translation", "Rotation", "Scale"};
-    std::vector<std::string_view> sphere = without(names(sphereTable()), "Material");
+    std::vector<std::string_view> sphere = without(names(objectTable<Sphere>()), "Material");
     sphere.insert(sphere.end(), transforms.begin(), transforms.end());
     EXPECT_EQ(names(csgSphereTable()), sphere);
-    std::vector<std::string_view> cylinder = without(names(cylinderTable()), "Material");
+    std::vector<std::string_view> cylinder = without(names(objectTable<Cylinder>()), "Material");
     cylinder.insert(cylinder.end(), transforms.begin(), transforms.end());
     EXPECT_EQ(names(csgCylinderTable()), cylinder);
-    EXPECT_EQ(names(csgBoxTable()), without(names(boxTable()), "Material"));
+    EXPECT_EQ(names(csgBoxTable()), without(names(objectTable<Box>()), "Material"));
 }
 
 }  // namespace

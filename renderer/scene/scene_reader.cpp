@@ -60,6 +60,10 @@ private:
     void readBlock(const Block& block, size_t index) {
         const std::string& id = block.identifier;
         if (id.empty()) return;  // a nameless '{', already reported
+#define TRAZO_X(Shape, array, Kind, keyword) \
+    if (id == keyword) return readObjectBlock(block, index, scene_.array);
+        TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
         if (id == "SceneSettings") {
             SceneSettings settings;  // like Camera, the last block wins as a whole
             readParameters(block, sceneSettingsTable(), settings, diags_);
@@ -71,18 +75,6 @@ private:
             readTexture(block, index);
         } else if (id == "Material") {
             readMaterial(block, index);
-        } else if (id == "Sphere") {
-            scene_.spheres.push_back(readObject(block, index, sphereTable()).object);
-        } else if (id == "Box") {
-            scene_.boxes.push_back(readObject(block, index, boxTable()).object);
-            if (checkInvertible(scene_.boxes.back().transforms, block))
-                checkBoxNormals(scene_.boxes.back().transforms, block);
-        } else if (id == "Cylinder") {
-            scene_.cylinders.push_back(readObject(block, index, cylinderTable()).object);
-        } else if (id == "CSG") {
-            readCsg(block, index);
-        } else if (id == "Mesh") {
-            readMesh(block, index);
         } else if (id == "PointLight") {
             PointLight light;
             readParameters(block, pointLightTable(), light, diags_);
@@ -228,8 +220,22 @@ private:
         }
     }
 
-    void readMesh(const Block& block, size_t index) {
-        ObjectDraft<Mesh> d = readObject(block, index, meshTable());
+    // An object kind's block: its table's parameters, then what the kind checks or loads beyond them.
+    template <class T>
+    void readObjectBlock(const Block& block, size_t index, std::vector<T>& objects) {
+        ObjectDraft<T> d = readObject(block, index, objectTable<T>());
+        finishObject(d, block);
+        objects.push_back(std::move(d.object));
+    }
+
+    template <class T>
+    void finishObject(ObjectDraft<T>&, const Block&) {}
+
+    void finishObject(ObjectDraft<Box>& d, const Block& block) {
+        if (checkInvertible(d.object.transforms, block)) checkBoxNormals(d.object.transforms, block);
+    }
+
+    void finishObject(ObjectDraft<Mesh>& d, const Block& block) {
         Mesh& mesh = d.object;
         const bool invertible = checkInvertible(mesh.transforms, block);
         if (!mesh.source.empty()) {
@@ -237,18 +243,15 @@ private:
             mesh.data = loadNamedFile(mesh.source, d.sourceAt, meshes_, readObjText, kMaxTextFileBytes);
         }
         if (mesh.data && invertible) checkMeshExtent(mesh, block);
-        scene_.meshes.push_back(std::move(mesh));
     }
 
-    void readCsg(const Block& block, size_t index) {
-        ObjectDraft<Csg> d = readObject(block, index, csgTable());
+    void finishObject(ObjectDraft<Csg>& d, const Block& block) {
         Csg& csg = d.object;
         checkInvertible(csg.transforms, block);
         if (!csg.source.empty()) {
             csg.source = resolveRelativePath(file_, csg.source);
             csg.tree = loadNamedFile(csg.source, d.sourceAt, csgTrees_, readCsgText, kMaxSceneFileBytes);
         }
-        scene_.csgs.push_back(std::move(csg));
     }
 
     // Reads a file named by a Source line once per scene; an unreadable file (not a regular file, or over

@@ -218,35 +218,40 @@ std::span<const ParamSpec<MaterialDraft>> materialTable() {
     return rows;
 }
 
-std::span<const ParamSpec<ObjectDraft<Sphere>>> sphereTable() {
+template <>
+std::span<const ParamSpec<ObjectDraft<Sphere>>> objectTable<Sphere>() {
     using Draft = ObjectDraft<Sphere>;
     static const std::vector<ParamSpec<Draft>> rows =
         withDefaults(concat<ParamSpec<Draft>>({{materialRow<Sphere>()}, lift(&Draft::object, sphereRows<Sphere>())}));
     return rows;
 }
 
-std::span<const ParamSpec<ObjectDraft<Box>>> boxTable() {
+template <>
+std::span<const ParamSpec<ObjectDraft<Box>>> objectTable<Box>() {
     using Draft = ObjectDraft<Box>;
     static const std::vector<ParamSpec<Draft>> rows =
         withDefaults(concat<ParamSpec<Draft>>({{materialRow<Box>()}, lift(&Draft::object, transformRows<Box>())}));
     return rows;
 }
 
-std::span<const ParamSpec<ObjectDraft<Cylinder>>> cylinderTable() {
+template <>
+std::span<const ParamSpec<ObjectDraft<Cylinder>>> objectTable<Cylinder>() {
     using Draft = ObjectDraft<Cylinder>;
     static const std::vector<ParamSpec<Draft>> rows =
         withDefaults(concat<ParamSpec<Draft>>({{materialRow<Cylinder>()}, lift(&Draft::object, cylinderRows<Cylinder>())}));
     return rows;
 }
 
-std::span<const ParamSpec<ObjectDraft<Csg>>> csgTable() {
+template <>
+std::span<const ParamSpec<ObjectDraft<Csg>>> objectTable<Csg>() {
     using Draft = ObjectDraft<Csg>;
     static const std::vector<ParamSpec<Draft>> rows = withDefaults(concat<ParamSpec<Draft>>(
         {{materialRow<Csg>(), sourceRow<Csg>(".csg file with the tree")}, lift(&Draft::object, transformRows<Csg>())}));
     return rows;
 }
 
-std::span<const ParamSpec<ObjectDraft<Mesh>>> meshTable() {
+template <>
+std::span<const ParamSpec<ObjectDraft<Mesh>>> objectTable<Mesh>() {
     using Draft = ObjectDraft<Mesh>;
     static const std::vector<ParamSpec<Draft>> rows = withDefaults(
         concat<ParamSpec<Draft>>({{materialRow<Mesh>(), sourceRow<Mesh>(".obj file")}, lift(&Draft::object, transformRows<Mesh>())}));
@@ -337,10 +342,10 @@ const std::vector<BlockInfo>& sceneBlocks() {
     static const std::vector<BlockInfo> blocks = {
         infoOf("SceneSettings", sceneSettingsTable()), infoOf("Camera", cameraTable()),
         infoOf("Texture", textureTable()),             infoOf("Material", materialTable()),
-        infoOf("Sphere", sphereTable()),               infoOf("Box", boxTable()),
-        infoOf("Cylinder", cylinderTable()),           infoOf("CSG", csgTable()),
-        infoOf("Mesh", meshTable()),                   infoOf("PointLight", pointLightTable()),
-        infoOf("AreaLight", areaLightTable()),
+#define TRAZO_X(Shape, array, Kind, keyword) infoOf(keyword, objectTable<Kind>()),
+        TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
+        infoOf("PointLight", pointLightTable()),       infoOf("AreaLight", areaLightTable()),
     };
     return blocks;
 }

@@ -63,11 +63,10 @@ std::string formatScene(const Scene& scene, const std::string& scenePath) {
     for (const Texture& t : scene.textures) writeBlock(out, "Texture", textureTable(), TextureDraft{t, {}, {}}, scenePath);
     for (const Material& m : scene.materials)
         writeBlock(out, "Material", materialTable(), materialDraft(m, scene.textures), scenePath);
-    writeObjects(out, "Sphere", sphereTable(), scene.spheres, scene, scenePath);
-    writeObjects(out, "Box", boxTable(), scene.boxes, scene, scenePath);
-    writeObjects(out, "Cylinder", cylinderTable(), scene.cylinders, scene, scenePath);
-    writeObjects(out, "CSG", csgTable(), scene.csgs, scene, scenePath);
-    writeObjects(out, "Mesh", meshTable(), scene.meshes, scene, scenePath);
+#define TRAZO_X(Shape, array, Kind, keyword) \
+    writeObjects(out, keyword, objectTable<Kind>(), scene.array, scene, scenePath);
+    TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
     for (const PointLight& l : scene.pointLights) writeBlock(out, "PointLight", pointLightTable(), l, scenePath);
     for (const AreaLight& l : scene.areaLights) writeBlock(out, "AreaLight", areaLightTable(), l, scenePath);
     return out;
