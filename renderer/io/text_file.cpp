@@ -117,13 +117,6 @@ bool readWholeFile(const std::string& path, std::string& contents, std::string& 
     return true;
 }
 
-bool checkReadable(const std::string& path, std::string& reason) {
-    const int fd = openRegularFile(path, reason);  // never blocks: a FIFO or a device is refused unopened
-    if (fd < 0) return false;
-    ::close(fd);
-    return true;
-}
-
 std::string resolveRelativePath(const std::string& namingFile, const std::string& written) {
     const std::filesystem::path p(written);
     if (p.is_absolute()) return p.lexically_normal().string();

@@ -23,10 +23,6 @@ int openRegularFile(const std::string& path, std::string& reason);
 bool readWholeFile(const std::string& path, std::string& contents, std::string& reason,
                    size_t maxBytes = kMaxTextFileBytes);
 
-// Opens and closes `path` to learn whether it can be read: a regular file only, checked before opening (a
-// FIFO would block the open for ever); on failure `reason` is as for openRegularFile.
-bool checkReadable(const std::string& path, std::string& reason);
-
 // `written` relative to the folder of `namingFile` (unchanged when absolute), lexically normalised.
 std::string resolveRelativePath(const std::string& namingFile, const std::string& written);
 
