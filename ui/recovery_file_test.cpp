@@ -118,13 +118,22 @@ TEST(RecoveryFile, AKillAtAnyMomentLeavesAWholeFile) {
     std::mt19937 random(1234);
     int killedWhileWriting = 0;
     for (int round = 0; round < 20; ++round) {
+        int ready[2];
+        ASSERT_EQ(pipe(ready), 0);
         const pid_t child = fork();
         ASSERT_GE(child, 0);
         if (child == 0) {
             RecoveryFile recovery(a.path);
-            for (uint64_t i = 0;; ++i) recovery.flush(i % 2 ? b : a, true);
+            recovery.flush(a, true);
+            const char byte = 1;
+            if (write(ready[1], &byte, 1) != 1) _exit(1);  // the file exists: the parent may start its clock
+            for (uint64_t i = 1;; ++i) recovery.flush(i % 2 ? b : a, true);
         }
-        std::this_thread::sleep_for(std::chrono::microseconds(2000 + random() % 20000));
+        char byte = 0;
+        ASSERT_EQ(read(ready[0], &byte, 1), 1);
+        close(ready[0]);
+        close(ready[1]);
+        std::this_thread::sleep_for(std::chrono::microseconds(random() % 20000));
         kill(child, SIGKILL);
         int status = 0;
         waitpid(child, &status, 0);
