@@ -107,7 +107,7 @@ bool drawStep(TransformStep& step, Gestures& gestures) {
 }  // namespace
 
 DirtyFlags drawTransformSteps(std::vector<TransformStep>& steps, ObjectId::Kind kind, Gestures& gestures,
-                              std::string& status) {
+                              std::string& status, const MeshData* mesh) {
     std::vector<TransformStep> edited = steps;
     bool changed = false;
     for (size_t i = 0; i < edited.size(); ++i) {
@@ -136,7 +136,7 @@ DirtyFlags drawTransformSteps(std::vector<TransformStep>& steps, ObjectId::Kind 
         }
     }
     if (!changed) return kDirtyNone;
-    const std::string problem = transformProblem(edited, kind);
+    const std::string problem = transformProblem(edited, kind, mesh);
     if (!problem.empty()) {
         status = problem + "; the change was not made";
         return kDirtyNone;
@@ -235,7 +235,8 @@ DirtyFlags drawObjectEditor(Scene& scene, ObjectsPanelState& state, ObjectsPanel
     if (std::vector<TransformStep>* steps = objectTransforms(scene, id)) {
         ImGui::PushID("steps");
         ImGui::TextDisabled("Transforms, applied in this order:");
-        edits |= drawTransformSteps(*steps, id.kind, state.gestures, state.status);
+        const MeshData* mesh = id.kind == Kind::Mesh ? scene.meshes[id.index].data.get() : nullptr;
+        edits |= drawTransformSteps(*steps, id.kind, state.gestures, state.status, mesh);
         ImGui::PopID();
     }
     if (edits) {

@@ -38,6 +38,6 @@ DirtyFlags drawObjectEditor(Scene& scene, ObjectsPanelState& state, ObjectsPanel
 // The steps of a Box, Mesh or CSG: kind, values, order; a change the reader would refuse is not made
 // (transformProblem's reason goes to `status`).
 DirtyFlags drawTransformSteps(std::vector<TransformStep>& steps, ObjectId::Kind kind, Gestures& gestures,
-                              std::string& status);
+                              std::string& status, const MeshData* mesh = nullptr);
 
 }  // namespace trazo

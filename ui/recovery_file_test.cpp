@@ -108,6 +108,23 @@ TEST(RecoveryFile, AFailedWriteIsReported) {
     EXPECT_FALSE(recovery.error().empty());
 }
 
+// What an update costs the frame that writes: formatScene and the atomic write, for 10^4 objects.
+TEST(RecoveryFile, ALargeSceneIsWrittenWhole) {
+    const std::string dir = test::freshDir("recovery_large");
+    Scene scene = sceneIn(dir);
+    for (int i = 0; i < 10000; ++i) addObject(scene, Kind::Sphere, Vec3(float(i), 0, 0), 0.5f);
+    RecoveryFile recovery(scene.path);
+    const auto start = RecoveryFile::Clock::now();
+    ASSERT_TRUE(recovery.flush(scene, true)) << recovery.error();
+    const double ms = std::chrono::duration<double, std::milli>(RecoveryFile::Clock::now() - start).count();
+    Diagnostics diags;
+    const Scene back = RecoveryFile::read(scene.path, diags);
+    EXPECT_FALSE(diags.hasErrors());
+    EXPECT_EQ(back.spheres.size(), scene.spheres.size());
+    std::printf("recovery file of %zu objects: %zu bytes written in %.1f ms\n", listObjects(scene).size(),
+                test::readFileText(recovery.path()).size(), ms);
+}
+
 // A child writes two scenes in turn as fast as it can and is killed with SIGKILL at a random moment: the file
 // is always one of the two, whole.
 TEST(RecoveryFile, AKillAtAnyMomentLeavesAWholeFile) {

@@ -282,6 +282,11 @@ TEST(SceneEdit, TransformStepsInsertMoveAndCheck) {
     const std::vector<TransformStep> huge = {{Step::Scale, Vec3(1e19f, 1, 1), 0}};
     EXPECT_EQ(transformProblem(huge, Kind::Mesh), "");
     EXPECT_NE(transformProblem(huge, Kind::Box), "");
+    // A mesh's span after its transforms: the unit triangle scaled by 1e9 is at the limit, by 2e9 past it.
+    MeshData triangle;
+    triangle.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    EXPECT_EQ(transformProblem({{Step::Scale, Vec3(1e9f), 0}}, Kind::Mesh, &triangle), "");
+    EXPECT_NE(transformProblem({{Step::Scale, Vec3(2e9f), 0}}, Kind::Mesh, &triangle), "");
 }
 
 TEST(SceneEdit, NewObjectsAreAFifthOfTheViewHigh) {
