@@ -242,6 +242,7 @@ DirtyFlags drawObjectEditor(Scene& scene, ObjectsPanelState& state, ObjectsPanel
     if (edits) {
         actions.label = editLabel;
         actions.gesture = state.gestures.edited;
+        actions.changedObject = id;
     }
     return dirty | edits;
 }

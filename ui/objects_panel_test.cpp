@@ -144,6 +144,9 @@ TEST(ObjectsPanel, EachHeldDragIsOneGesture) {
         if (dirty) {
             history.commit(before, "Edit Box 0", dirty, state.gestures.edited);
             gestures.push_back(state.gestures.edited);
+            EXPECT_EQ(heldGesture(state.gestures), state.gestures.edited);  // the panel-wide view agrees
+        } else if (!ImGui::IsMouseDown(0)) {
+            EXPECT_EQ(heldGesture(state.gestures), 0u);
         }
     };
     imgui.frame(ImVec2(-1, -1), false, draw);
