@@ -123,6 +123,21 @@ TEST(ObjectsPanel, AClickOnSphereAddsOneAtTheViewCentre) {
     EXPECT_EQ(actions.label, "Add Sphere " + std::to_string(spheres));
     EXPECT_EQ(actions.gesture, 0u);
     EXPECT_EQ(state.selection, (ObjectId{Kind::Sphere, uint32_t(spheres)}));
+
+    // A click on the list's first row selects the first object.
+    ImVec2 firstRow;
+    auto list = [&] {
+        const ImVec2 at = ImGui::GetCursorScreenPos();
+        firstRow = ImVec2(at.x + 30, at.y + ImGui::GetStyle().WindowPadding.y + 0.5f * ImGui::GetTextLineHeight());
+        drawObjectList(scene, state, actions);
+    };
+    actions = {};
+    imgui.frame(ImVec2(-1, -1), false, list);
+    imgui.frame(firstRow, false, list);
+    imgui.frame(firstRow, true, list);
+    imgui.frame(firstRow, false, list);
+    EXPECT_TRUE(actions.selectionChanged);
+    EXPECT_EQ(state.selection, listObjects(scene).front());
 }
 
 // A drag on a transform step's values, through drawTransformSteps, committed as the viewer would.
