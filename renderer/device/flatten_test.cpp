@@ -136,8 +136,9 @@ TEST(Flatten, ReuseGivesTheBytesOfAFreshFlattenOnEveryShippedScene) {
             expectSameBytes(afterEdit, flatten(edited), where + " (vs a fresh flatten of the edited scene)");
             FlattenResult back = flatten(original, &afterEdit);
             expectSameBytes(back, fresh, where + " and back");
-            if (what == "recolour a material" || what == "move a sphere")  // no mesh changed: all taken whole
+            if (what == "recolour a material" || what == "move a sphere") {  // no mesh changed: none built
                 EXPECT_EQ(afterEdit.meshesBuilt, 0u) << where;
+            }
         }
         FlattenResult again = flatten(original);
         const FlattenResult unchanged = flatten(original, &again);
@@ -159,8 +160,9 @@ TEST(Flatten, MovingOneMeshRebuildsOnlyIt) {
     EXPECT_EQ(after.meshesReused, 1u);
     EXPECT_EQ(after.reused, kNoArrays);
     expectSameBytes(after, flatten(scene), "one mesh moved");
-    // Mesh 1 first, with the mesh arrays' sizes unchanged: the moved mesh's arrays are the only ones to differ.
-    EXPECT_EQ(describeArrays(changedArrays(before.arrays, after.arrays) & kMeshArrays), "meshNodes triangles triangleCorners");
+    // Mesh 1 first, with the mesh arrays' sizes unchanged: the moved mesh's nodes and triangles are all that
+    // differ (a translation leaves its corners' normals and uvs as they were).
+    EXPECT_EQ(describeArrays(changedArrays(before.arrays, after.arrays) & kMeshArrays), "meshNodes triangles");
 }
 
 TEST(ArrayMask, NamesFollowTheArrayList) {
