@@ -141,6 +141,23 @@ TEST(ViewerSessionPick, PicksFollowEditsAndMissesAreEmpty) {
     EXPECT_FALSE(session.pick(16.0f, 12.0f).has_value());
 }
 
+// The CUDA backend's object queries (rayAnswerKernel) and partial uploads give the CPU's answers.
+TEST(ViewerSessionPick, CudaAnswersTheSameObjects) {
+    std::string why;
+    std::unique_ptr<Backend> cuda = createBackend(BackendChoice::Cuda, 0, why);
+    if (!cuda) GTEST_SKIP() << "no CUDA backend: " << why;
+    ViewerSession onCpu(pickScene(), createCpuBackend(2), 0), onGpu(pickScene(), std::move(cuda), 0);
+    for (int edit = 0; edit < 2; ++edit) {
+        EXPECT_EQ(onCpu.objectIds(64, 48), onGpu.objectIds(64, 48)) << "edit " << edit;
+        for (ViewerSession* s : {&onCpu, &onGpu}) {  // a partial upload: spheres and topNodes
+            s->scene().spheres[1].center.x -= 0.7f;
+            s->markDirty(kDirtyScene);
+            s->applyEdits();
+        }
+        EXPECT_EQ(onGpu.lastUpload().changed, onCpu.lastUpload().changed);
+    }
+}
+
 // A sphere, a cylinder, a 2-triangle mesh, lights, two materials: every kind of edit the panels make.
 Scene editScene() {
     Scene s = pickScene();
