@@ -42,6 +42,15 @@ Scene mixedScene() {
     Cylinder cylinder;
     cylinder.base = Vec3(0.5f, 0, 0);
     s.cylinders.push_back(cylinder);
+    auto tree = std::make_shared<CsgTree>();  // a CSG solid of one sphere, at x 1.5
+    CsgNode ball;
+    ball.center = Vec3(1.5f, 0, 0);
+    ball.radius = 0.2f;
+    tree->nodes.push_back(ball);
+    tree->root = 0;
+    Csg csg;
+    csg.tree = tree;
+    s.csgs.push_back(csg);
     s.meshes.push_back(meshAt(std::make_shared<MeshData>(), Vec3(0)));  // no triangles: draws nothing
     s.meshes.push_back(meshAt(squareMesh(), Vec3(3.5f, 0, 0)));
     s.meshes.push_back(meshAt(squareMesh(), Vec3(-1, 0, 0)));
@@ -53,7 +62,7 @@ TEST(Flatten, SourcesMapEveryObjectBackToItsHostObject) {
     const FlattenResult flat = flatten(scene);
     const SceneArrays& a = flat.arrays;
     ASSERT_EQ(flat.sources.size(), a.objects.size());
-    ASSERT_EQ(a.objects.size(), 4u + 1 + 1 + 2);  // the empty mesh has no entry
+    ASSERT_EQ(a.objects.size(), 4u + 1 + 1 + 1 + 2);  // the empty mesh has no entry
     bool reordered = false;
     std::vector<ObjectId> seen;
     for (size_t i = 0; i < a.objects.size(); ++i) {
@@ -74,6 +83,13 @@ TEST(Flatten, SourcesMapEveryObjectBackToItsHostObject) {
             EXPECT_EQ(flat.meshes[id.index].shape, int32_t(o.index));
             break;
         }
+        case ObjectKind::Csg:
+            EXPECT_EQ(id.index, 0u);
+        {
+            const Aabb b = objectBounds(hostView(a), a.csgs[o.index]);
+            EXPECT_NEAR(0.5f * (b.min.x + b.max.x), 1.5f, 1e-4f);
+        }
+            break;
         default:
             EXPECT_EQ(id.index, 0u);  // one box, one cylinder
         }
@@ -129,7 +145,7 @@ TEST(Flatten, ReuseGivesTheBytesOfAFreshFlattenOnEveryShippedScene) {
         const FlattenResult fresh = flatten(original);
         for (const auto& [what, edit] : edits()) {
             const std::string where = name + ", " + what;
-            FlattenResult current = flatten(original);
+            FlattenResult current = fresh;  // a copy: the reusing flatten takes arrays out of it
             Scene edited = original;
             edit(edited);
             FlattenResult afterEdit = flatten(edited, &current);
@@ -140,7 +156,7 @@ TEST(Flatten, ReuseGivesTheBytesOfAFreshFlattenOnEveryShippedScene) {
                 EXPECT_EQ(afterEdit.meshesBuilt, 0u) << where;
             }
         }
-        FlattenResult again = flatten(original);
+        FlattenResult again = fresh;
         const FlattenResult unchanged = flatten(original, &again);
         expectSameBytes(unchanged, fresh, name + ", unedited");
         EXPECT_EQ(unchanged.reused, kMeshArrays) << name;
