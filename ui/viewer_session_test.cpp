@@ -24,15 +24,20 @@ public:
     struct Calls {
         int upload = 0, resize = 0, reset = 0, render = 0;
         uint32_t width = 0, height = 0, passes = 0;
+        ArrayMask lastChanged = kNoArrays;  // of the last upload
+        bool failUploads = false;
         SceneArrays lastUpload;
         FrameParams lastFrame{};
     };
     explicit RecordingBackend(Calls& calls, bool throwOnRender = false) : calls_(calls), throw_(throwOnRender) {}
     std::string name() const override { return "recording"; }
     std::string deviceName() const override { return "test"; }
-    void upload(const SceneArrays& arrays) override {
+    void upload(const SceneArrays& arrays) override { upload(arrays, kAllArrays); }
+    void upload(const SceneArrays& arrays, ArrayMask changed) override {
+        if (calls_.failUploads) throw std::runtime_error("out of device memory");
         ++calls_.upload;
         calls_.lastUpload = arrays;
+        calls_.lastChanged = changed;
     }
     void resize(uint32_t width, uint32_t height) override {
         ++calls_.resize;
@@ -52,6 +57,7 @@ public:
         out.assign(queries.size(), INFINITY);  // the session never asks
         return 0.0;
     }
+    using Backend::traceRays;
 
 private:
     Calls& calls_;
@@ -95,6 +101,30 @@ TEST(ViewerSession, MaterialEditReuploadsAndRestarts) {
     session.applyEdits();                                            // nothing dirty: nothing done
     EXPECT_EQ(calls.upload, uploads + 1);
     EXPECT_EQ(calls.reset, resets + 1);
+}
+
+// The backend is told which arrays changed; a replaced scene that cannot be uploaded leaves the old one.
+TEST(ViewerSession, UploadsNameTheChangedArraysAndAFailedReplaceKeepsTheScene) {
+    RecordingBackend::Calls calls;
+    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
+    EXPECT_EQ(calls.lastChanged, kAllArrays);  // the first upload: everything
+    session.scene().materials[1].diffuseColor = Vec3(0.2f, 0.3f, 0.4f);
+    session.markDirty(kDirtyScene);
+    session.applyEdits();
+    EXPECT_EQ(describeArrays(calls.lastChanged), "materials");
+
+    const size_t spheres = session.scene().spheres.size();
+    Scene other = readScene("scenes/scene3_csg.scene");
+    calls.failUploads = true;
+    EXPECT_THROW(session.replaceScene(other), std::runtime_error);
+    EXPECT_EQ(session.scene().spheres.size(), spheres);
+    EXPECT_EQ(session.fileScene().path, readScene("scenes/scene1_area.scene").path);
+    EXPECT_EQ(session.renderWidth(), 16u);
+    calls.failUploads = false;
+    session.renderPasses(1);  // the next batch re-sends the old scene whole (the backend may hold part of either)
+    EXPECT_EQ(calls.lastChanged, kAllArrays);
+    EXPECT_EQ(calls.lastUpload.spheres.size(), spheres);
+    EXPECT_EQ(session.passes(), 1u);
 }
 
 TEST(ViewerSession, CameraEditResetsWithoutUpload) {
