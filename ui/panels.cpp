@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "convergence_plot.h"
 #include "param_widget.h"
 #include "scene/block_table.h"
 
@@ -165,8 +166,21 @@ void drawRenderPanel(PanelState& state, const RenderInfo& info, PanelActions& ac
         ImGui::Text("(%.0f to go)", std::max(0.0, state.targetPasses - info.samples));
     }
     ImGui::Text("%.3g samples/s  %.3g Mrays/s  %.1f s", info.samplesPerSecond, info.mraysPerSecond, info.elapsedSeconds);
+    if (info.convergence.empty()) {
+        ImGui::TextDisabled("Error estimate: after two passes");
+    } else {
+        ImGui::Text("Error estimate: %.3g %% (the two halves)%s", 100.0 * info.convergence.back().second,
+                    info.targetReached ? ", target reached" : "");
+        drawConvergencePlot(info.convergence, state.targetErrorPercent / 100.0);
+    }
     ImGui::InputInt("Stop after", &state.targetPasses, 1, int(std::max(info.cyclePasses, 1u)));
     state.targetPasses = std::max(state.targetPasses, 0);
+    ImGui::SameLine();
+    ImGui::TextDisabled("(0: never)");
+    if (ImGui::InputFloat("Stop at error %", &state.targetErrorPercent, 0.1f, 1.0f, "%.2f")) {
+        state.targetErrorPercent = std::clamp(state.targetErrorPercent, 0.0f, 100.0f);
+        actions.targetErrorChanged = true;
+    }
     ImGui::SameLine();
     ImGui::TextDisabled("(0: never)");
     if (ImGui::Button("Restart")) actions.restart = true;
@@ -198,24 +212,88 @@ void drawExportPanel(PanelState& state, PanelActions& actions) {
     if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
 }
 
-PanelActions drawPanels(Scene& scene, PanelState& state, const RenderInfo& info) {
-    PanelActions actions;
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(360, std::min(ImGui::GetIO().DisplaySize.y - 16.0f, 640.0f)), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.85f);
-    if (ImGui::Begin("Trazo")) {
-        ImGui::PushItemWidth(-150);
-        if (ImGui::CollapsingHeader("Scene settings")) actions.dirty |= drawSceneSettingsPanel(scene.settings);
-        if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
-            actions.dirty |= drawCameraPanel(scene.camera, actions);
-        if (ImGui::CollapsingHeader("Materials")) actions.dirty |= drawMaterialsPanel(scene, state);
-        if (ImGui::CollapsingHeader("Lights")) actions.dirty |= drawLightsPanel(scene, state);
-        if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(state, info, actions);
-        if (ImGui::CollapsingHeader("Export", ImGuiTreeNodeFlags_DefaultOpen)) drawExportPanel(state, actions);
-        ImGui::PopItemWidth();
+void drawOpenPanel(PanelState& state, PanelActions& actions) {
+    if (ImGui::InputText("Path", state.openPath, sizeof state.openPath, ImGuiInputTextFlags_EnterReturnsTrue))
+        actions.open = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Open")) actions.open = true;
+    ImGui::TextDisabled("or drop a .scene file onto the window");
+    if (state.openMessages.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    for (const std::string& m : state.openMessages) ImGui::TextWrapped("%s", m.c_str());
+    ImGui::PopStyleColor();
+    if (ImGui::SmallButton("Dismiss")) state.openMessages.clear();
+}
+
+float drawMenuBar(const MenuInfo& info, PanelActions& actions) {
+    if (!ImGui::BeginMainMenuBar()) return 0.0f;
+    const auto item = [&](const char* label, const char* keys, ViewerCommand command, bool enabled = true,
+                          bool checked = false) {
+        if (ImGui::MenuItem(label, keys, checked, enabled)) actions.commands.push_back(command);
+    };
+    if (ImGui::BeginMenu("File")) {
+        item("Save scene", "Ctrl+S", ViewerCommand::SaveScene);
+        item("Save image", "P", ViewerCommand::Screenshot);
+        ImGui::Separator();
+        item("Quit", "Ctrl+Q", ViewerCommand::Quit);
+        ImGui::EndMenu();
     }
+    if (ImGui::BeginMenu("Edit")) {
+        item(info.canUndo ? ("Undo " + info.undoLabel).c_str() : "Undo", "Ctrl+Z", ViewerCommand::Undo, info.canUndo);
+        item(info.canRedo ? ("Redo " + info.redoLabel).c_str() : "Redo", "Ctrl+Shift+Z", ViewerCommand::Redo,
+             info.canRedo);
+        ImGui::Separator();
+        item("Move selection", "G", ViewerCommand::Grab, info.hasSelection);
+        item("Duplicate", "Ctrl+D", ViewerCommand::Duplicate, info.hasSelection);
+        item("Delete", "Delete", ViewerCommand::Delete, info.hasSelection);
+        item("Clear selection", "Escape", ViewerCommand::Cancel, info.hasSelection);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        item("Fit", "0", ViewerCommand::FitView, true, info.fitted);
+        item("Actual pixels (1:1)", "1", ViewerCommand::ActualPixels);
+        item("Zoom in", "+ / Ctrl+wheel", ViewerCommand::ZoomIn);
+        item("Zoom out", "-", ViewerCommand::ZoomOut);
+        ImGui::Separator();
+        item("Frame scene", "F", ViewerCommand::FrameScene);
+        item("File camera", "R", ViewerCommand::ResetCamera);
+        ImGui::EndMenu();
+    }
+    const float height = ImGui::GetWindowSize().y;
+    ImGui::EndMainMenuBar();
+    return height;
+}
+
+void beginSidePanel(PanelState& state, float top) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const float height = std::max(io.DisplaySize.y - top, 1.0f);
+    const float scale = ImGui::GetFontSize() / 13.0f;  // the content scale the font was made for
+    const float most = std::max(kMinPanelWidth * scale, io.DisplaySize.x * kMaxPanelShare);
+    ImGui::SetNextWindowPos(ImVec2(0, top), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(state.panelWidth, height), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(kMinPanelWidth * scale, height), ImVec2(most, height));
+    ImGui::Begin("Trazo", nullptr, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                                       ImGuiWindowFlags_NoBringToFrontOnFocus);
+    // The edge drag resizes the window this frame: keep its width for the next (and for the image's area).
+    state.panelWidth = ImGui::GetWindowWidth();
+    ImGui::PushItemWidth(-150 * scale);
+}
+
+void drawSidePanelSections(Scene& scene, PanelState& state, const RenderInfo& info, PanelActions& actions) {
+    if (!state.openMessages.empty()) ImGui::SetNextItemOpen(true);  // a failed open shows why
+    if (ImGui::CollapsingHeader("Open scene")) drawOpenPanel(state, actions);
+    if (ImGui::CollapsingHeader("Scene settings")) actions.dirty |= drawSceneSettingsPanel(scene.settings);
+    if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
+        actions.dirty |= drawCameraPanel(scene.camera, actions);
+    if (ImGui::CollapsingHeader("Materials")) actions.dirty |= drawMaterialsPanel(scene, state);
+    if (ImGui::CollapsingHeader("Lights")) actions.dirty |= drawLightsPanel(scene, state);
+    if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(state, info, actions);
+    if (ImGui::CollapsingHeader("Export", ImGuiTreeNodeFlags_DefaultOpen)) drawExportPanel(state, actions);
+}
+
+void endSidePanel() {
+    ImGui::PopItemWidth();
     ImGui::End();
-    return actions;
 }
 
 }  // namespace trazo

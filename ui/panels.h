@@ -9,6 +9,8 @@
 #include "dirty_flags.h"
 #include "display.h"
 #include "scene/scene.h"
+#include "screen_layout.h"
+#include "viewer_command.h"
 
 namespace trazo {
 
@@ -22,6 +24,16 @@ struct RenderInfo {
     std::string blocks;  // the current segment's (describeBlocks)
     double elapsedSeconds = 0, samplesPerSecond = 0, mraysPerSecond = 0;
     std::vector<std::string> unsupported;  // flatten's warnings (what is read but not drawn), formatted
+    // The estimated relative error (RMS over the image, from the two halves' difference) against render time
+    // since the last reset; empty before there is one.
+    std::vector<std::pair<double, double>> convergence;
+    bool targetReached = false;
+};
+
+// What the menu bar shows enabled or checked.
+struct MenuInfo {
+    bool canUndo = false, canRedo = false, hasSelection = false, fitted = true;
+    std::string undoLabel, redoLabel;  // "Move Sphere 2", shown after Undo / Redo
 };
 
 struct PanelState {
@@ -30,7 +42,11 @@ struct PanelState {
     ToneSettings tone;
     BackendChoice backend = BackendChoice::Cpu;  // the Render panel's choice: Cpu or Cuda
     int targetPasses = 0;      // stop after this many one-stratum passes' worth of samples; 0 = keep going
-    bool sizeFollowsWindow = false;
+    bool sizeFollowsWindow = false;  // the image area's size
+    float targetErrorPercent = 0;    // stop when the estimated relative error is below it; 0 = keep going
+    float panelWidth = kPanelWidth;  // window coordinates; its right edge drags it
+    char openPath[1024] = {};
+    std::vector<std::string> openMessages;  // why the last open failed (file:line: error: ...)
     char screenshotPath[1024] = {};
     char scenePath[1024] = {};
     std::string status;  // last export message
@@ -41,10 +57,19 @@ struct PanelActions {
     bool frameScene = false, resetCamera = false, restart = false;
     bool switchBackend = false;  // to PanelState::backend
     bool screenshot = false, newScreenshotName = false, saveScene = false;
+    bool targetErrorChanged = false;
+    bool open = false;  // the scene at PanelState::openPath
+    std::vector<ViewerCommand> commands;  // from the menu bar
 };
 
-// The whole side panel: Scene settings, Camera, Materials, Lights, Render, Export.
-PanelActions drawPanels(Scene& scene, PanelState& state, const RenderInfo& info);
+// The menu bar (File, Edit, View) across the top; returns its height (window coordinates).
+float drawMenuBar(const MenuInfo& info, PanelActions& actions);
+// The side panel at the window's left edge below the menu bar (`top`), the whole height, never over the image;
+// its width (PanelState::panelWidth) follows a drag of its right edge. Between begin and end: the sections
+// (Open, Scene settings, Camera, Materials, Lights, Render, Export), then whatever the caller adds (Objects).
+void beginSidePanel(PanelState& state, float top);
+void drawSidePanelSections(Scene& scene, PanelState& state, const RenderInfo& info, PanelActions& actions);
+void endSidePanel();
 
 DirtyFlags drawSceneSettingsPanel(SceneSettings& settings);
 DirtyFlags drawCameraPanel(Camera& camera, PanelActions& actions);
@@ -52,5 +77,6 @@ DirtyFlags drawMaterialsPanel(Scene& scene, PanelState& state);
 DirtyFlags drawLightsPanel(Scene& scene, PanelState& state);
 void drawRenderPanel(PanelState& state, const RenderInfo& info, PanelActions& actions);
 void drawExportPanel(PanelState& state, PanelActions& actions);
+void drawOpenPanel(PanelState& state, PanelActions& actions);
 
 }  // namespace trazo

@@ -26,6 +26,8 @@
 #include "render/render_start.h"
 #include "render/strata_plan.h"
 #include "scene/scene_reader.h"
+#include "screen_layout.h"
+#include "view_transform.h"
 #include "viewer_session.h"
 #include "viewer_stats.h"
 #include "window.h"
@@ -44,23 +46,17 @@ constexpr uint32_t kDefaultTargetPasses = 1024;
 // seconds after the last edit. Screenshots and --frames always use the full size.
 constexpr double kPreviewPassSeconds = 1.0 / 20.0;
 constexpr double kPreviewHoldSeconds = 0.25;
+constexpr float kZoomStep = 1.25f;  // per wheel notch or +/- press
 
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// The window's starting size: the image's, kept on a usual screen and at least 640×480 (the panel needs room;
-// a small image is shown enlarged).
-void initialWindowSize(uint32_t width, uint32_t height, int& w, int& h) {
-    const double scale = std::clamp(std::min(640.0 / width, 480.0 / height), 1.0, 8.0);
-    const double shrink = std::min({1.0, 1600.0 / (width * scale), 1000.0 / (height * scale)});
-    w = std::max(int(width * scale * shrink), 320);
-    h = std::max(int(height * scale * shrink), 240);
-}
-
 class ViewerApp {
 public:
-    ViewerApp(const ViewerOptions& options, Window& window, ViewerSession& session, Clock::time_point start)
+    ViewerApp(const ViewerOptions& options, Window& window, ViewerSession& session, Clock::time_point start,
+              float panelWidth)
         : options_(options), window_(window), session_(session),
           exports_(options.scenePath, options.screenshot, state_), stats_(start) {
+        state_.panelWidth = panelWidth;
         std::string device;
         cudaBuilt_ = cudaDeviceAvailable(device) || session.backend().name() == "cuda";
         state_.backend = runningBackend();
@@ -97,18 +93,9 @@ public:
             }
             // Redraw only when something changed: an idle window leaves the cores to the renderer.
             if (!active && !imageChanged && settleFrames_ <= 0 && stats_.frames() > 0) continue;
-            int fbw, fbh;
-            window_.framebufferSize(fbw, fbh);
-            ImGui_ImplOpenGL3_NewFrame();
-            ImGui_ImplGlfw_NewFrame();
-            ImGui::NewFrame();
-            apply(drawPanels(session_.scene(), state_, renderInfo(display)));
-            ImGui::Render();
-            display.draw(fbw, fbh, state_.tone);
-            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-            window_.swapBuffers();
+            drawFrame(display);
             stats_.frameShown(frameStart, Clock::now(), imageShown_, fullImageShown_, window_.dragging());
-            if (state_.sizeFollowsWindow) followWindowSize(fbw, fbh);
+            if (state_.sizeFollowsWindow) followAreaSize();
             if (!active && settleFrames_ > 0) --settleFrames_;
         }
         printStats(display);
@@ -116,6 +103,43 @@ public:
     }
 
 private:
+    // The menu bar and the side panel (ImGui), then the image in the area beside them, then the UI over it.
+    void drawFrame(Display& display) {
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        PanelActions actions;
+        menuHeight_ = drawMenuBar(menuInfo(), actions);
+        beginSidePanel(state_, menuHeight_);
+        drawSidePanelSections(session_.scene(), state_, renderInfo(display), actions);
+        endSidePanel();
+        apply(actions);
+        ImGui::Render();
+        int fbw, fbh;
+        window_.framebufferSize(fbw, fbh);
+        updateArea();
+        display.draw(fbw, fbh, area_, imageRect(), state_.tone);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        window_.swapBuffers();
+    }
+
+    // The image's area beside the panel, in framebuffer pixels (as the panel's width stands this frame).
+    void updateArea() {
+        int w, h, fbw, fbh;
+        window_.windowSize(w, h);
+        window_.framebufferSize(fbw, fbh);
+        area_ = imageArea(w, h, fbw, fbh, state_.panelWidth, menuHeight_);
+        framebufferScale_ = w > 0 ? float(fbw) / float(w) : 1.0f;
+    }
+    // Where the full-size image is shown (a preview's smaller accumulation is stretched over the same place).
+    ImageRect imageRect() const { return view_.rect(area_, session_.renderWidth(), session_.renderHeight()); }
+
+    MenuInfo menuInfo() const {
+        MenuInfo info;
+        info.fitted = view_.fitted();
+        return info;
+    }
+
     // Woken early by input or by the batch's end (Window::wake); ImGui gets a few frames to settle.
     void waitForEvents() {
         const bool finished = state_.targetPasses > 0 && session_.samples() >= double(state_.targetPasses) &&
@@ -185,13 +209,16 @@ private:
             controller_.orbit(camera, e.orbitX, e.orbitY);
             dirty |= kDirtyCamera;
         }
-        if (e.panX != 0 || e.panY != 0) {
-            int fbw, fbh;
-            window_.framebufferSize(fbw, fbh);
-            controller_.pan(camera, e.panX, e.panY,
-                            fitImage(fbw, fbh, session_.renderWidth(), session_.renderHeight()).height);
+        if (e.panX != 0 || e.panY != 0) {  // the drag in framebuffer pixels against the image's height on screen
+            controller_.pan(camera, e.panX * framebufferScale_, e.panY * framebufferScale_, imageRect().height);
             dirty |= kDirtyCamera;
         }
+        if (e.viewPanX != 0 || e.viewPanY != 0)
+            view_.panBy(e.viewPanX * framebufferScale_, e.viewPanY * framebufferScale_, area_, session_.renderWidth(),
+                        session_.renderHeight());
+        if (e.zoom != 0)
+            view_.zoomBy(std::pow(kZoomStep, e.zoom), e.zoomAt.x * framebufferScale_, e.zoomAt.y * framebufferScale_,
+                         area_, session_.renderWidth(), session_.renderHeight());
         if (e.scroll != 0) {
             controller_.dolly(camera, e.scroll);
             dirty |= kDirtyCamera;
@@ -219,6 +246,15 @@ private:
             case ViewerCommand::Screenshot: screenshotPending_ = true; break;
             case ViewerCommand::SaveScene: exports_.saveScene(session_.scene(), state_); break;
             case ViewerCommand::Quit: window_.requestClose(); break;
+            case ViewerCommand::FitView: view_.fit(); break;
+            case ViewerCommand::ActualPixels: view_.actualPixels(); break;
+            case ViewerCommand::ZoomIn:
+            case ViewerCommand::ZoomOut:
+                view_.zoomBy(command == ViewerCommand::ZoomIn ? kZoomStep : 1.0f / kZoomStep,
+                             area_.x + 0.5f * area_.width, area_.y + 0.5f * area_.height, area_,
+                             session_.renderWidth(), session_.renderHeight());
+                break;
+            default: break;
         }
         return kDirtyNone;
     }
@@ -236,6 +272,7 @@ private:
         if (a.screenshot) execute(ViewerCommand::Screenshot);
         if (a.newScreenshotName) exports_.renameScreenshot(state_);
         if (a.saveScene) execute(ViewerCommand::SaveScene);
+        for (const ViewerCommand command : a.commands) markEdited(execute(command));
     }
 
     // Edits restart the image, at preview size for kPreviewHoldSeconds.
@@ -260,12 +297,13 @@ private:
         }
     }
 
-    // Render at the window's size: the accumulation (and the display) are reallocated when it changes.
-    void followWindowSize(int fbw, int fbh) {
+    // Render at the image area's size: the accumulation (and the display) are reallocated when it changes.
+    void followAreaSize() {
         SceneSettings& s = session_.scene().settings;
-        if (fbw <= 0 || fbh <= 0 || (s.renderWidth == fbw && s.renderHeight == fbh)) return;
-        s.renderWidth = std::min(fbw, kMaxRenderSize);
-        s.renderHeight = std::min(fbh, kMaxRenderSize);
+        const int w = int(area_.width), h = int(area_.height);
+        if (w <= 0 || h <= 0 || (s.renderWidth == w && s.renderHeight == h)) return;
+        s.renderWidth = std::min(w, kMaxRenderSize);
+        s.renderHeight = std::min(h, kMaxRenderSize);
         session_.setRenderSize(uint32_t(s.renderWidth), uint32_t(s.renderHeight));
         session_.markDirty(kDirtyCamera);
     }
@@ -329,7 +367,26 @@ private:
     uint64_t shownGeneration_ = ~uint64_t(0);
     int settleFrames_ = 0;
     Clock::time_point lastEdit_{};
+    ViewTransform view_;
+    ImageRect area_;
+    float menuHeight_ = 0, framebufferScale_ = 1;
 };
+
+// HiDPI: the font is made at the screen's content scale and drawn at 1 / (framebuffer pixels per window
+// coordinate), the sizes scaled to match; returns the UI's scale in window coordinates per UI point (1 on a
+// plain screen; 2 on an X11 or Windows screen at 200 %; 1 on a Retina screen, whose framebuffer is twice the
+// window instead).
+float setUpUiScale(const Window& window) {
+    const float content = window.screen().contentScale, framebuffer = window.framebufferScale();
+    ImGuiIO& io = ImGui::GetIO();
+    ImFontConfig font;
+    font.SizePixels = 13.0f * content;
+    io.Fonts->AddFontDefault(&font);
+    io.FontGlobalScale = 1.0f / framebuffer;
+    const float uiScale = content / framebuffer;
+    ImGui::GetStyle().ScaleAllSizes(uiScale);
+    return uiScale;
+}
 
 }  // namespace
 
@@ -352,12 +409,9 @@ int runViewer(const ViewerOptions& options) {
     const uint32_t height = options.height ? options.height : uint32_t(scene.settings.renderHeight);
     scene.settings.renderWidth = int(width);  // the Scene settings panel shows the size in use
     scene.settings.renderHeight = int(height);
-    int windowWidth, windowHeight;
-    initialWindowSize(width, height, windowWidth, windowHeight);
-
     std::string error;
-    std::unique_ptr<Window> window = Window::open(
-        "trazo — " + std::filesystem::path(options.scenePath).filename().string(), windowWidth, windowHeight, error);
+    std::unique_ptr<Window> window =
+        Window::open("trazo — " + std::filesystem::path(options.scenePath).filename().string(), error);
     if (!window) {
         std::fprintf(stderr, "trazo: cannot open the viewer: %s; render without a window with `trazo --render %s -o image.png`\n",
                      error.c_str(), options.scenePath.c_str());
@@ -385,10 +439,16 @@ int runViewer(const ViewerOptions& options) {
         ImGui::CreateContext();
         ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the user's folder
         ImGui::StyleColorsDark();
+        const float uiScale = setUpUiScale(*window);
+        int windowWidth, windowHeight;
+        initialWindowSize(width, height, kPanelWidth * uiScale, 13.0f * uiScale + 2 * ImGui::GetStyle().FramePadding.y,
+                          window->framebufferScale(),
+                          window->screen().width, window->screen().height, windowWidth, windowHeight);
+        window->show(windowWidth, windowHeight);
         ImGui_ImplGlfw_InitForOpenGL(window->handle(), true);  // chains to the window's own callbacks
         ImGui_ImplOpenGL3_Init("#version 330 core");
         {
-            ViewerApp app(options, *window, session, start);
+            ViewerApp app(options, *window, session, start, kPanelWidth * uiScale);
             status = app.run(display);
         }
         session.waitIdle();
