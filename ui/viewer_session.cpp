@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
@@ -39,11 +40,49 @@ void ViewerSession::setPreviewDivisor(uint32_t divisor) {
     dirty_ |= kDirtySize;
 }
 
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
 void ViewerSession::replaceBackend(std::unique_ptr<Backend> backend) {
     waitIdle();
     backend_ = std::move(backend);
+    uploadAll_ = true;
     dirty_ |= kDirtyScene | kDirtySize;
     applyEdits();
+}
+
+void ViewerSession::replaceScene(Scene scene, bool keepSize) {
+    waitIdle();
+    const auto t0 = std::chrono::steady_clock::now();
+    FlattenResult next = flatten(scene);
+    const double flattenSeconds = secondsSince(t0);
+    const auto t1 = std::chrono::steady_clock::now();
+    try {
+        backend_->upload(next.arrays, kAllArrays);
+    } catch (...) {
+        uploadAll_ = true;  // the backend may hold part of either scene: the next edit sends everything again
+        dirty_ |= kDirtyScene;
+        throw;
+    }
+    lastUpload_ = UploadReport{kAllArrays, next.meshesBuilt, 0, flattenSeconds, 0.0, secondsSince(t1)};
+    scene_ = std::move(scene);
+    fileScene_ = scene_;
+    flat_ = std::move(next);
+    uploadAll_ = false;
+    cyclePasses_ = fullCyclePasses(flat_.arrays, StrataBlocks::ones());
+    if (!keepSize) {
+        requestedWidth_ = uint32_t(std::max(scene_.settings.renderWidth, 1));
+        requestedHeight_ = uint32_t(std::max(scene_.settings.renderHeight, 1));
+    }
+    dirty_ = kDirtySize | kDirtyCamera;  // the scene is uploaded: reallocate and restart
+    const UploadReport report = lastUpload_;
+    applyEdits();
+    lastUpload_ = report;
 }
 
 bool ViewerSession::busy() {
@@ -59,6 +98,7 @@ bool ViewerSession::busy() {
     secondsPerPixelPass_ = secondsPerPass_ / (double(width_) * height_);
     rays_ = backend_->raysTraced();
     ++generation_;
+    estimateAfterBatch();
     growBlocks();
     return false;
 }
@@ -101,7 +141,8 @@ void ViewerSession::waitIdle() {
 void ViewerSession::applyEdits() {
     waitIdle();
     if (dirty_ == kDirtyNone) return;
-    if (dirty_ & kDirtyScene) uploadScene();
+    lastUpload_ = UploadReport{};
+    if ((dirty_ & kDirtyScene) || uploadAll_) uploadScene();
     if (dirty_ & kDirtySize) {
         width_ = std::max((requestedWidth_ + previewDivisor_ - 1) / previewDivisor_, 1u);
         height_ = std::max((requestedHeight_ + previewDivisor_ - 1) / previewDivisor_, 1u);
@@ -111,10 +152,28 @@ void ViewerSession::applyEdits() {
     dirty_ = kDirtyNone;
 }
 
+// Meshes whose data and placement are unchanged keep their arrays (flatten's `previous`), and only the
+// arrays that differ from the last upload are sent again.
 void ViewerSession::uploadScene() {
-    flat_ = flatten(scene_);
+    UploadReport report;
+    const auto t0 = std::chrono::steady_clock::now();
+    FlattenResult next = flatten(scene_, uploadAll_ ? nullptr : &flat_);
+    report.flattenSeconds = secondsSince(t0);
+    report.meshesRebuilt = next.meshesBuilt;
+    report.meshesReused = next.meshesReused;
+    const auto t1 = std::chrono::steady_clock::now();
+    report.changed = uploadAll_ ? kAllArrays : changedArrays(flat_.arrays, next.arrays, next.reused);
+    report.compareSeconds = secondsSince(t1);
+    flat_ = std::move(next);
     cyclePasses_ = fullCyclePasses(flat_.arrays, StrataBlocks::ones());
-    backend_->upload(flat_.arrays);  // the CUDA backend re-sends only the arrays that changed
+    const auto t2 = std::chrono::steady_clock::now();
+    if (report.changed != kNoArrays) {
+        uploadAll_ = true;  // until the upload is whole
+        backend_->upload(flat_.arrays, report.changed);
+        uploadAll_ = false;
+    }
+    report.uploadSeconds = secondsSince(t2);
+    lastUpload_ = report;
 }
 
 void ViewerSession::clearAccumulation() {
@@ -126,13 +185,44 @@ void ViewerSession::clearAccumulation() {
     rays_ = 0;
     renderSeconds_ = 0.0;
     ++generation_;
+    convergence_.clear();
+    estimate_ = ErrorEstimate{};
+    estimateTried_ = false;
+    lastEstimateSeconds_ = 0.0;
+    targetReached_ = false;
+}
+
+bool ViewerSession::estimateDue() const {
+    return splitsHalves(segmentCycle_) && (!estimateTried_ || renderSeconds_ - lastEstimateSeconds_ >= kEstimateInterval);
+}
+
+void ViewerSession::estimateAfterBatch() {
+    const uint32_t evenCycles = 2 * segmentCycle_;
+    if (segmentPasses_ == 0 || segmentPasses_ % evenCycles != 0 || !estimateDue()) return;
+    estimateTried_ = true;
+    lastEstimateSeconds_ = renderSeconds_;
+    std::vector<AccumPixel> accum;
+    backend_->readAccumulation(accum);
+    const ErrorEstimate e = estimateError(accum);
+    if (!e.available) return;
+    estimate_ = e;
+    convergence_.push_back({renderSeconds_, e.relError, passes_});
+    if (targetError_ > 0.0 && e.relError <= targetError_) targetReached_ = true;
+}
+
+void ViewerSession::setTargetError(double target) {
+    targetError_ = std::max(target, 0.0);
+    targetReached_ = targetError_ > 0.0 && estimate_.available && estimate_.relError <= targetError_;
 }
 
 void ViewerSession::startPasses(uint32_t count) {
     applyEdits();
+    if (targetReached_) return;
     count = std::min(count, kMaxProgressivePasses - passes_);
     // With growth on, batches end at the segment's cycle boundaries, where growBlocks may start a new one.
     if (growthPassSeconds_ > 0.0) count = std::min(count, segmentCycle_ - segmentPasses_ % segmentCycle_);
+    // An estimate due: the batch ends where the halves are balanced (the pixels do not depend on batching).
+    if (estimateDue()) count = std::min(count, 2 * segmentCycle_ - segmentPasses_ % (2 * segmentCycle_));
     if (count == 0) return;
     batchPasses_ = count;
     std::promise<double> promise;
@@ -155,6 +245,60 @@ uint32_t ViewerSession::passesForBudget(double seconds) const {
     if (passes_ == 0 || secondsPerPixelPass_ <= 0.0) return 1;
     const double perPass = secondsPerPixelPass_ * width_ * height_;
     return uint32_t(std::clamp(seconds / perPass, 1.0, 65536.0));
+}
+
+std::vector<RayQuery> ViewerSession::cameraRays(uint32_t width, uint32_t height, const std::vector<float>& xy) const {
+    // The kernels' camera (makeFrameParams, generateCameraRay) for this size.
+    const CameraFrame camera = makeFrameParams(scene_, width, height, seed_).camera;
+    std::vector<RayQuery> queries(xy.size() / 2);
+    for (size_t i = 0; i < queries.size(); ++i)
+        queries[i] = RayQuery{generateCameraRay(camera, xy[2 * i], xy[2 * i + 1]), INFINITY};
+    return queries;
+}
+
+std::optional<PickHit> ViewerSession::pick(float x, float y) {
+    applyEdits();
+    const std::vector<RayQuery> queries = cameraRays(requestedWidth_, requestedHeight_, {x, y});
+    std::vector<RayAnswer> answers;
+    backend_->traceRays(queries, RayQueryKind::Object, answers);
+    const std::optional<ObjectId> object = objectOf(answers[0].object);
+    if (!object) return std::nullopt;
+    return PickHit{*object, answers[0].t, pointAt(queries[0].ray, answers[0].t)};
+}
+
+std::vector<int32_t> ViewerSession::objectIds(uint32_t width, uint32_t height) {
+    applyEdits();
+    std::vector<float> xy;
+    xy.reserve(size_t(width) * height * 2);
+    for (uint32_t y = 0; y < height; ++y) {
+        for (uint32_t x = 0; x < width; ++x) {
+            xy.push_back(float(x) + 0.5f);
+            xy.push_back(float(y) + 0.5f);
+        }
+    }
+    std::vector<RayAnswer> answers;
+    backend_->traceRays(cameraRays(width, height, xy), RayQueryKind::Object, answers);
+    std::vector<int32_t> ids(answers.size());
+    for (size_t i = 0; i < answers.size(); ++i) ids[i] = answers[i].object;
+    return ids;
+}
+
+std::optional<ObjectId> ViewerSession::objectOf(int32_t answer) const {
+    if (isAreaLightAnswer(answer)) return ObjectId{ObjectId::Kind::AreaLight, areaLightOfAnswer(answer)};
+    if (answer < 0 || size_t(answer) >= flat_.sources.size()) return std::nullopt;
+    return flat_.sources[size_t(answer)];
+}
+
+std::vector<uint8_t> ViewerSession::selectionMask(const std::vector<int32_t>& ids, const ObjectId& selected) const {
+    // The one answer that stands for `selected` (an object that draws nothing has none: an empty mask).
+    int32_t want = kMissAnswer;
+    if (selected.kind == ObjectId::Kind::AreaLight) want = areaLightAnswer(selected.index);
+    for (size_t i = 0; i < flat_.sources.size() && !selected.isLight(); ++i)
+        if (flat_.sources[i] == selected) want = int32_t(i);
+    std::vector<uint8_t> mask(ids.size(), 0);
+    if (want == kMissAnswer) return mask;
+    for (size_t i = 0; i < ids.size(); ++i) mask[i] = ids[i] == want ? 1 : 0;
+    return mask;
 }
 
 std::vector<Vec3> ViewerSession::image() {

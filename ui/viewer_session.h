@@ -14,6 +14,7 @@
 #include <functional>
 #include <future>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -21,9 +22,37 @@
 #include "backends/backend.h"
 #include "device/flatten.h"
 #include "dirty_flags.h"
+#include "render/error_estimate.h"
+#include "scene/object_id.h"
 #include "scene/scene.h"
 
 namespace trazo {
+
+// What a click on the image found: the object (or area light) nearest along the camera ray, at distance t,
+// at `point` (world space).
+struct PickHit {
+    ObjectId object;
+    float t;
+    Vec3 point;
+};
+
+// What the last applyEdits (or replaceScene) re-flattened and re-sent.
+struct UploadReport {
+    ArrayMask changed = kNoArrays;  // arrays sent to the backend (none: a camera or size edit)
+    uint32_t meshesRebuilt = 0;     // meshes whose BVH was built again
+    uint32_t meshesReused = 0;
+    double flattenSeconds = 0.0;    // flatten(), with reuse
+    double compareSeconds = 0.0;    // finding the changed arrays
+    double uploadSeconds = 0.0;     // Backend::upload of the changed arrays
+};
+
+// One point of the convergence plot: the estimated relative error (error_estimate.h) after `seconds` of
+// rendering since the last reset.
+struct ConvergencePoint {
+    double seconds;
+    double relError;
+    uint32_t passes;
+};
 
 class ViewerSession {
 public:
@@ -48,6 +77,42 @@ public:
     uint32_t renderWidth() const { return requestedWidth_; }  // the full size (what screenshots hold)
     uint32_t renderHeight() const { return requestedHeight_; }
     void replaceBackend(std::unique_ptr<Backend> backend);  // waits, uploads, allocates, clears
+    // A new scene (opened at run time; read without errors): it becomes fileScene() too, pending edits of the
+    // old one are dropped, and the render size becomes the scene's RenderWidth × RenderHeight unless
+    // keepSize. Flattens and uploads it whole. If that throws, the old scene stays (and the exception
+    // reaches the caller).
+    void replaceScene(Scene scene, bool keepSize = false);
+    const UploadReport& lastUpload() const { return lastUpload_; }
+
+    // Picking through the backend's own ray query (RayQueryKind::Object, the image's traversal). (x, y) in
+    // pixels of the full render size, (0, 0) the image's top-left corner (pixel centres at +0.5). Applies
+    // pending edits first (waiting for a running batch), so it answers for the scene the next image shows.
+    // Nothing there (background): nullopt.
+    std::optional<PickHit> pick(float x, float y);
+    // For every pixel centre of a width × height image of the same camera (row 0 = top): what the camera ray
+    // hits first, as RayAnswer::object (an index into arrays().objects, areaLightAnswer(i), or kMissAnswer).
+    // Applies pending edits first, like pick.
+    std::vector<int32_t> objectIds(uint32_t width, uint32_t height);
+    // The host object of each entry of arrays().objects (parallel to it).
+    const std::vector<ObjectId>& objectSources() const { return flat_.sources; }
+    // The host object or area light of a RayAnswer::object; nullopt for a miss.
+    std::optional<ObjectId> objectOf(int32_t answer) const;
+    // 1 where objectIds' entry is `selected`, else 0 (the selection's outline is this mask's edge).
+    std::vector<uint8_t> selectionMask(const std::vector<int32_t>& ids, const ObjectId& selected) const;
+
+    // Convergence. At the end of a batch whose passes complete an even number of cycles of the current segment
+    // (where the two halves are equally stratified, progressive_render.h), at most every kEstimateInterval
+    // seconds of rendering, the error is estimated from the accumulation's halves (estimateError) and added to
+    // the series; batches are cut at those points when an estimate is due. While blocks grow, segments are
+    // single cycles and nothing is estimated; after growth the earlier segments make the estimate approximate.
+    static constexpr double kEstimateInterval = 0.25;
+    const std::vector<ConvergencePoint>& convergence() const { return convergence_; }  // since the last reset
+    const ErrorEstimate& errorEstimate() const { return estimate_; }  // the latest (available false: none yet)
+    // Stops batches once an estimate reaches relError <= target (0: never stop, the default). Kept across
+    // resets; targetReached() starts false again after each.
+    void setTargetError(double target);
+    double targetError() const { return targetError_; }
+    bool targetReached() const { return targetReached_; }
 
     // Batches of passes, one at a time. startPasses applies pending edits first.
     void startPasses(uint32_t count);
@@ -94,6 +159,10 @@ public:
 private:
     void uploadScene();
     void clearAccumulation();
+    bool estimateDue() const;
+    void estimateAfterBatch();                      // at the end of a batch: a convergence point when due
+    // Camera rays of a width × height image through image positions (x, y), answered by the backend.
+    std::vector<RayQuery> cameraRays(uint32_t width, uint32_t height, const std::vector<float>& xy) const;
     void startSegment(const StrataBlocks& blocks);  // frame_ for a new segment from the current pass on
     void growBlocks();                              // at the end of a batch: a larger segment when it pays
 
@@ -102,6 +171,8 @@ private:
     uint32_t seed_;
     uint32_t width_ = 0, height_ = 0, requestedWidth_ = 0, requestedHeight_ = 0, previewDivisor_ = 1;
     FlattenResult flat_;
+    bool uploadAll_ = true;  // the backend holds nothing of flat_ yet (new session, backend or scene)
+    UploadReport lastUpload_;
     FrameParams frame_{};
     uint32_t cyclePasses_ = 1;      // of one stratum per pass
     uint32_t segment_ = 0;          // segments since the last reset
@@ -123,6 +194,13 @@ private:
     double secondsPerPass_ = 0.0;  // of the last batch, for the budget
     double secondsPerPixelPass_ = 0.0;
     uint64_t generation_ = 0;
+
+    std::vector<ConvergencePoint> convergence_;
+    ErrorEstimate estimate_;
+    bool estimateTried_ = false;         // since the last reset
+    double lastEstimateSeconds_ = 0.0;   // renderSeconds_ at the last try
+    double targetError_ = 0.0;
+    bool targetReached_ = false;
 };
 
 }  // namespace trazo

@@ -24,15 +24,20 @@ public:
     struct Calls {
         int upload = 0, resize = 0, reset = 0, render = 0;
         uint32_t width = 0, height = 0, passes = 0;
+        ArrayMask lastChanged = kNoArrays;  // of the last upload
+        bool failUploads = false;
         SceneArrays lastUpload;
         FrameParams lastFrame{};
     };
     explicit RecordingBackend(Calls& calls, bool throwOnRender = false) : calls_(calls), throw_(throwOnRender) {}
     std::string name() const override { return "recording"; }
     std::string deviceName() const override { return "test"; }
-    void upload(const SceneArrays& arrays) override {
+    void upload(const SceneArrays& arrays) override { upload(arrays, kAllArrays); }
+    void upload(const SceneArrays& arrays, ArrayMask changed) override {
+        if (calls_.failUploads) throw std::runtime_error("out of device memory");
         ++calls_.upload;
         calls_.lastUpload = arrays;
+        calls_.lastChanged = changed;
     }
     void resize(uint32_t width, uint32_t height) override {
         ++calls_.resize;
@@ -52,6 +57,7 @@ public:
         out.assign(queries.size(), INFINITY);  // the session never asks
         return 0.0;
     }
+    using Backend::traceRays;
 
 private:
     Calls& calls_;

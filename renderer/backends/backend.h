@@ -3,9 +3,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "device/array_mask.h"
 #include "device/scene_arrays.h"
 #include "integrator/frame_params.h"
 #include "integrator/ray_query.h"
@@ -28,6 +30,13 @@ public:
     }
     // Copies the flattened scene into backend memory (replacing any previous one).
     virtual void upload(const SceneArrays& arrays) = 0;
+    // Replaces only the arrays (and values) in `changed`; the rest stay as uploaded before, which must be
+    // what `arrays` holds there (an edit: changedArrays() between the two flattens). Backends that cannot
+    // update in part upload everything.
+    virtual void upload(const SceneArrays& arrays, ArrayMask changed) {
+        (void)changed;
+        upload(arrays);
+    }
     // The same for a caller that no longer needs the arrays: a backend that renders from host memory takes
     // them over instead of copying (the CPU backend: a million-triangle mesh is 160 MB of arrays). `arrays`
     // is left valid but unspecified.
@@ -45,6 +54,9 @@ public:
     // Answers every query against the uploaded scene (answerRayQuery; benchmarks and agreement tests) into
     // `out`. Returns the seconds spent tracing, without copies to or from the device.
     virtual double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) = 0;
+    // The same for any RayQueryKind, with what each nearest hit belongs to (RayQueryKind::Object: the viewer's
+    // picking). The default answers Nearest and Shadow through the overload above and refuses Object.
+    virtual double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out);
 
     // Display (the viewer): writes the current estimate, sum / count as float RGBA (alpha 1, row 0 = top),
     // into the OpenGL buffer object `glBuffer` (at least width·height·16 bytes; width × height must be the
@@ -60,6 +72,15 @@ public:
     // storage is specified again, which a registered buffer must not see.
     virtual void releaseGlBuffer() {}
 };
+
+inline double Backend::traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) {
+    if (kind == RayQueryKind::Object) throw std::runtime_error("the " + name() + " backend answers no object queries");
+    std::vector<float> answers;
+    const double seconds = traceRays(queries, kind == RayQueryKind::Shadow, answers);
+    out.resize(answers.size());
+    for (size_t i = 0; i < answers.size(); ++i) out[i] = RayAnswer{answers[i], kMissAnswer};
+    return seconds;
+}
 
 enum class BackendChoice { Auto, Cpu, Cuda };
 

@@ -3,12 +3,14 @@
 
 #include "device/flatten_csg.h"
 #include "device/flatten_mesh.h"
+#include "device/mesh_reuse.h"
 
 #include "accel/bvh_build.h"
 #include "accel/collapse_bvh.h"
 #include "objects/visit_object.h"
 
 #include <cmath>
+#include <type_traits>
 
 namespace trazo {
 
@@ -104,8 +106,8 @@ Aabb paddedBounds(const SceneView& view, const ObjectRef& o) {
     return b.padded();
 }
 
-// The top-level BVH over every object; objects are reordered into its leaf order.
-void buildTopLevel(SceneArrays& out) {
+// The top-level BVH over every object; objects (and their sources) are reordered into its leaf order.
+void buildTopLevel(SceneArrays& out, std::vector<ObjectId>& sources) {
     std::vector<Aabb> bounds;
     const SceneView view = hostView(out);
     for (const ObjectRef& o : out.objects) bounds.push_back(paddedBounds(view, o));
@@ -113,8 +115,13 @@ void buildTopLevel(SceneArrays& out) {
     options.maxLeafSize = 2;
     Bvh bvh = buildBvh(bounds, options);
     std::vector<ObjectRef> ordered;
-    for (uint32_t old : bvh.primitiveOrder) ordered.push_back(out.objects[old]);
+    std::vector<ObjectId> orderedSources;
+    for (uint32_t old : bvh.primitiveOrder) {
+        ordered.push_back(out.objects[old]);
+        orderedSources.push_back(sources[old]);
+    }
     out.objects = std::move(ordered);
+    sources = std::move(orderedSources);
     out.topNodes = collapseBvh(bvh);
 }
 
@@ -142,24 +149,32 @@ void areaLightAxes(Vec3 normal, float rollAngle, Vec3& u, Vec3& v) {
     v = v0 * c - u0 * s;
 }
 
-FlattenResult flatten(const Scene& scene) {
+FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
     FlattenResult result;
     SceneArrays& out = result.arrays;
     MaterialTable materials(scene);
     const SceneSettings& s = scene.settings;
+    placeMeshes(scene, previous, result);  // meshes first: only they write the mesh arrays
 
     // Every object of every kind, kind by kind in the order of scene/object_kind_list.h.
-    auto add = [&](ObjectKind kind, const char* keyword, const auto& object, const auto& shapes) {
+    auto add = [&](ObjectKind kind, const char* keyword, uint32_t hostIndex, const auto& object, const auto& shapes) {
         uint32_t index = 0;
-        if (!appendObject(object, out, index)) return;
+        if constexpr (std::is_same_v<std::decay_t<decltype(object)>, Mesh>) {
+            if (result.meshes[hostIndex].shape < 0) return;
+            index = (uint32_t)result.meshes[hostIndex].shape;
+        } else if (!appendObject(object, out, index)) {
+            return;
+        }
         out.objects.push_back({kind, index, materials.index(object.material)});
+        result.sources.push_back(ObjectId::of(kind, hostIndex));
         warnIfTexturesIgnored(scene, object, keyword, out, shapes[index], result.warnings);
     };
-#define TRAZO_X(Shape, array, Kind, keyword) \
-    for (const auto& object : scene.array) add(ObjectKind::Kind, keyword, object, out.array);
+#define TRAZO_X(Shape, array, Kind, keyword)                  \
+    for (uint32_t i = 0; i < (uint32_t)scene.array.size(); ++i) \
+        add(ObjectKind::Kind, keyword, i, scene.array[i], out.array);
     TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
-    buildTopLevel(out);
+    buildTopLevel(out, result.sources);
     out.traversalStackNeed = traversalStackNeed(out);
     if (!materials.defaultUsed) materials.data.pop_back();
     out.materials = std::move(materials.data);

@@ -54,6 +54,18 @@ public:
         arrays_ = arrays;
         view_ = hostView(arrays_);
     }
+    void upload(const SceneArrays& arrays, ArrayMask changed) override {
+#define TRAZO_X(T, name, ...) \
+    if (changed & maskOf(SceneArray::name)) arrays_.name = arrays.name;
+        TRAZO_SCENE_ARRAYS(TRAZO_X)
+#undef TRAZO_X
+        if (changed & maskOf(SceneArray::values)) {
+            arrays_.settings = arrays.settings;
+            arrays_.features = arrays.features;
+            arrays_.traversalStackNeed = arrays.traversalStackNeed;
+        }
+        view_ = hostView(arrays_);
+    }
     void uploadMoved(SceneArrays&& arrays) override {
         arrays_ = std::move(arrays);
         view_ = hostView(arrays_);
@@ -92,6 +104,15 @@ public:
         const auto start = std::chrono::steady_clock::now();
         pool_.parallelFor(queries.size(), kChunk, [&](size_t begin, size_t end) {
             for (size_t i = begin; i < end; ++i) out[i] = answerRayQuery(view_, queries[i], shadow);
+        });
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) override {
+        out.resize(queries.size());
+        constexpr size_t kChunk = 4096;
+        const auto start = std::chrono::steady_clock::now();
+        pool_.parallelFor(queries.size(), kChunk, [&](size_t begin, size_t end) {
+            for (size_t i = begin; i < end; ++i) out[i] = answerRayQuery(view_, queries[i], kind);
         });
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }

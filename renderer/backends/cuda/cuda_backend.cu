@@ -36,6 +36,12 @@ __global__ void rayQueryKernel(SceneView scene, const RayQuery* queries, uint32_
     if (i < count) out[i] = answerRayQuery(scene, queries[i], shadow);
 }
 
+__global__ void rayAnswerKernel(SceneView scene, const RayQuery* queries, uint32_t count, RayQueryKind kind,
+                                RayAnswer* out) {
+    const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < count) out[i] = answerRayQuery(scene, queries[i], kind);
+}
+
 template <FeatureMask F>
 struct LaunchVariant {
     static constexpr auto value = &launchRenderPass<F>;
@@ -155,11 +161,13 @@ public:
               " entries and the CUDA kernels hold " + std::to_string(kDeviceTraversalStackSize);
         return false;
     }
-    void upload(const SceneArrays& a) override {
+    void upload(const SceneArrays& a) override { upload(a, kAllArrays); }
+    // Arrays outside `changed` are neither compared nor sent.
+    void upload(const SceneArrays& a, ArrayMask changed) override {
         std::string why;
         if (!accepts(a, why)) throw std::runtime_error(why);
-#define TRAZO_X(T, name, ...)        \
-    device_.name.assign(a.name); \
+#define TRAZO_X(T, name, ...)                                            \
+    if (changed & maskOf(SceneArray::name)) device_.name.assign(a.name); \
     view_.name = device_.name.view();
         TRAZO_SCENE_ARRAYS(TRAZO_X)
 #undef TRAZO_X
@@ -231,6 +239,25 @@ public:
         return milliseconds * 1e-3;
     }
 
+    double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) override {
+        out.assign(queries.size(), RayAnswer{0.0f, kMissAnswer});
+        if (queries.empty()) return 0.0;
+        queries_.assign(queries);
+        hits_.resizeForOutput(queries.size());
+        const uint32_t count = (uint32_t)queries.size();
+        constexpr uint32_t kBlock = 128;
+        const EventTimer timer;
+        TRAZO_CUDA_CHECK(cudaEventRecord(timer.start));
+        rayAnswerKernel<<<(count + kBlock - 1) / kBlock, kBlock>>>(view_, queries_.data(), count, kind, hits_.data());
+        TRAZO_CUDA_CHECK(cudaGetLastError());
+        TRAZO_CUDA_CHECK(cudaEventRecord(timer.stop));
+        TRAZO_CUDA_CHECK(cudaEventSynchronize(timer.stop));
+        float milliseconds = 0.0f;
+        TRAZO_CUDA_CHECK(cudaEventElapsedTime(&milliseconds, timer.start, timer.stop));
+        TRAZO_CUDA_CHECK(cudaMemcpy(out.data(), hits_.data(), count * sizeof(RayAnswer), cudaMemcpyDeviceToHost));
+        return milliseconds * 1e-3;
+    }
+
 private:
     size_t pixelCount() const { return (size_t)width_ * height_; }
 
@@ -244,6 +271,7 @@ private:
     SceneView view_{};
     DeviceArray<RayQuery> queries_;  // traceRays' buffers, kept for the next call
     DeviceArray<float> answers_;
+    DeviceArray<RayAnswer> hits_;
     AccumPixel* accum_ = nullptr;
     unsigned long long* rayCounter_ = nullptr;
     uint32_t width_ = 0, height_ = 0;
