@@ -67,11 +67,18 @@ ImageRect ViewTransform::rect(const ImageRect& area, uint32_t imageWidth, uint32
     return r;
 }
 
+ImagePoint ViewTransform::toImage(float px, float py, const ImageRect& area, uint32_t imageWidth,
+                                  uint32_t imageHeight) const {
+    const ImageRect r = rect(area, imageWidth, imageHeight);
+    if (r.width <= 0 || r.height <= 0) return {};
+    return ImagePoint{(px - r.x) / r.width * float(imageWidth), (py - r.y) / r.height * float(imageHeight)};
+}
+
 std::optional<ImagePoint> ViewTransform::imagePoint(float px, float py, const ImageRect& area, uint32_t imageWidth,
                                                     uint32_t imageHeight) const {
     const ImageRect r = rect(area, imageWidth, imageHeight);
     if (r.width <= 0 || r.height <= 0 || !r.contains(px, py) || !area.contains(px, py)) return std::nullopt;
-    return ImagePoint{(px - r.x) / r.width * float(imageWidth), (py - r.y) / r.height * float(imageHeight)};
+    return toImage(px, py, area, imageWidth, imageHeight);
 }
 
 }  // namespace trazo

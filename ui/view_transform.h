@@ -43,7 +43,9 @@ public:
     // The image's rectangle: its top-left corner at whole pixels, so that at 1:1 each image pixel is one
     // framebuffer pixel.
     ImageRect rect(const ImageRect& area, uint32_t imageWidth, uint32_t imageHeight) const;
-    // The image point under the framebuffer point (px, py); none outside the image.
+    // The image point under the framebuffer point (px, py), also beyond the image's edges (a move's cursor).
+    ImagePoint toImage(float px, float py, const ImageRect& area, uint32_t imageWidth, uint32_t imageHeight) const;
+    // The same, but none outside the image or its area (a click).
     std::optional<ImagePoint> imagePoint(float px, float py, const ImageRect& area, uint32_t imageWidth,
                                          uint32_t imageHeight) const;
 

@@ -86,6 +86,9 @@ TEST(ViewTransform, PointsOutsideTheImageOrItsAreaMapToNothing) {
     const ImagePoint corner = *v.imagePoint(r.x, r.y, kArea, 300, 100);
     EXPECT_EQ(corner.x, 0);
     EXPECT_EQ(corner.y, 0);
+    const ImagePoint beyond = v.toImage(r.x - 10, r.y + r.height + 4, kArea, 300, 100);  // a move's cursor
+    EXPECT_FLOAT_EQ(beyond.x, -10 * 300 / r.width);
+    EXPECT_FLOAT_EQ(beyond.y, 100 + 4 * 100 / r.height);
     v.actualPixels();
     v.zoomBy(8.0f, 680, 220, kArea, 300, 100);  // the image overflows the area: the panel's pixels map to nothing
     EXPECT_FALSE(v.imagePoint(kArea.x - 2, 220, kArea, 300, 100));

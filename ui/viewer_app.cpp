@@ -16,9 +16,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "camera_controller.h"
 #include "display.h"
+#include "editor_dialogs.h"
 #include "export_controller.h"
 #include "image/image_writer.h"
 #include "panels.h"
@@ -26,6 +28,8 @@
 #include "render/render_start.h"
 #include "render/strata_plan.h"
 #include "scene/scene_reader.h"
+#include "scene_editor.h"
+#include "scene_opener.h"
 #include "screen_layout.h"
 #include "view_transform.h"
 #include "viewer_session.h"
@@ -54,8 +58,8 @@ class ViewerApp {
 public:
     ViewerApp(const ViewerOptions& options, Window& window, ViewerSession& session, Clock::time_point start,
               float panelWidth)
-        : options_(options), window_(window), session_(session),
-          exports_(options.scenePath, options.screenshot, state_), stats_(start) {
+        : options_(options), window_(window), session_(session), scenePath_(options.scenePath),
+          exports_(options.scenePath, options.screenshot, state_), stats_(start), editor_(session, options.scenePath) {
         state_.panelWidth = panelWidth;
         std::string device;
         cudaBuilt_ = cudaDeviceAvailable(device) || session.backend().name() == "cuda";
@@ -67,6 +71,12 @@ public:
         // stratum per pass, so its image is `--render --blocks 1 --spp N`.
         if (options.blocks) session_.setBlocks(*options.blocks, 0.0);
         else if (!options.frames) session_.setBlocks(StrataBlocks::ones(), kBatchSeconds);
+        if (!options.frames) {  // automation leaves the files alone
+            if (const auto found = RecoveryFile::find(scenePath_)) {
+                recoveryPath_ = *found;
+                askingRecovery_ = true;
+            }
+        }
     }
 
     // The frame loop of Dear ImGui's examples (poll, build the UI, apply its actions, render, present), with the
@@ -74,7 +84,7 @@ public:
     int run(Display& display) {
         int status = 0;
         auto lastFrame = Clock::now();
-        while (!window_.shouldClose()) {
+        while (!closing()) {
             waitForEvents();
             const auto frameStart = Clock::now();
             const double dt = std::min(std::chrono::duration<double>(frameStart - lastFrame).count(), 0.1);
@@ -89,31 +99,54 @@ public:
                     status = finishAutomation();
                     break;
                 }
+                if (editor_.refreshOutline(outline_)) {
+                    display.setOutline(outline_, session_.renderWidth(), session_.renderHeight());
+                    settleFrames_ = std::max(settleFrames_, 1);
+                }
                 startNextBatch();
             }
             // Redraw only when something changed: an idle window leaves the cores to the renderer.
             if (!active && !imageChanged && settleFrames_ <= 0 && stats_.frames() > 0) continue;
             drawFrame(display);
-            stats_.frameShown(frameStart, Clock::now(), imageShown_, fullImageShown_, window_.dragging());
+            const auto shown = Clock::now();
+            stats_.frameShown(frameStart, shown, imageShown_, fullImageShown_, window_.dragging());
+            if (imageChanged) stats_.imageShown(shown);
             if (state_.sizeFollowsWindow) followAreaSize();
             if (!active && settleFrames_ > 0) --settleFrames_;
+            editor_.tick();
+            updateTitle();
         }
+        if (!options_.frames) editor_.quitting();
         printStats(display);
         return status;
     }
 
 private:
+    // The close button or Ctrl+Q: with unsaved edits, vetoed until the question is answered.
+    bool closing() {
+        if (!window_.shouldClose()) return false;
+        if (options_.frames || quitConfirmed_ || !editor_.unsaved()) return true;
+        window_.cancelClose();
+        ask(Pending::Quit);
+        return false;
+    }
+
     // The menu bar and the side panel (ImGui), then the image in the area beside them, then the UI over it.
     void drawFrame(Display& display) {
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
+        const Scene before = session_.scene();  // for the undo step of what the panels change
         PanelActions actions;
         menuHeight_ = drawMenuBar(menuInfo(), actions);
         beginSidePanel(state_, menuHeight_);
-        drawSidePanelSections(session_.scene(), state_, renderInfo(display), actions);
+        drawSidePanelSections(session_.scene(), state_, renderInfo(display), editor_.objects(),
+                              session_.scene().camera.poi, actions);
         endSidePanel();
+        editor_.commit(before, actions.label, actions.dirty, actions.gesture);
+        if (actions.objects.selectionChanged) editor_.reportSelection();
         apply(actions);
+        drawDialogs();
         ImGui::Render();
         int fbw, fbh;
         window_.framebufferSize(fbw, fbh);
@@ -133,16 +166,36 @@ private:
     }
     // Where the full-size image is shown (a preview's smaller accumulation is stretched over the same place).
     ImageRect imageRect() const { return view_.rect(area_, session_.renderWidth(), session_.renderHeight()); }
+    // A window point in the full-size image's pixels (beyond its edges too: a move's cursor).
+    ImagePoint toImage(CursorPoint c) const {
+        return view_.toImage(c.x * framebufferScale_, c.y * framebufferScale_, area_, session_.renderWidth(),
+                             session_.renderHeight());
+    }
 
     MenuInfo menuInfo() const {
         MenuInfo info;
+        const EditHistory& h = editor_.history();
+        info.canUndo = h.canUndo();
+        info.canRedo = h.canRedo();
+        info.undoLabel = h.undoLabel();
+        info.redoLabel = h.redoLabel();
+        info.hasSelection = editor_.selection().has_value();
         info.fitted = view_.fitted();
         return info;
     }
 
+    void updateTitle() {
+        const std::string title = "trazo — " + std::filesystem::path(scenePath_).filename().string() +
+                                  (editor_.unsaved() ? " *" : "");
+        if (title == title_) return;
+        title_ = title;
+        window_.setTitle(title);
+    }
+
     // Woken early by input or by the batch's end (Window::wake); ImGui gets a few frames to settle.
     void waitForEvents() {
-        const bool finished = state_.targetPasses > 0 && session_.samples() >= double(state_.targetPasses) &&
+        const bool finished = ((state_.targetPasses > 0 && session_.samples() >= double(state_.targetPasses)) ||
+                               session_.targetReached()) &&
                               session_.dirty() == kDirtyNone && !screenshotPending_;
         if (session_.busy() || (finished && session_.generation() == shownGeneration_)) {
             window_.waitEvents(settleFrames_ > 0 ? 1.0 / 60.0 : 0.5);
@@ -172,7 +225,7 @@ private:
         if (!options_.frames) choosePreview();
         const uint32_t target = state_.targetPasses > 0 ? uint32_t(state_.targetPasses) : kMaxProgressivePasses;
         if (session_.dirty() != kDirtyNone) session_.applyEdits();
-        if (session_.samples() < double(target)) {
+        if (session_.samples() < double(target) && !session_.targetReached()) {
             // The target counts one-stratum passes; a pass of a grown segment stands for several.
             const double left = (double(target) - session_.samples()) / session_.blocksWeight();
             const double budget = session_.passesForBudget(kBatchSeconds);
@@ -202,50 +255,77 @@ private:
     bool applyInput(double dt) {
         const ImGuiIO& io = ImGui::GetIO();
         window_.setUiCapture(io.WantCaptureMouse, io.WantCaptureKeyboard);
+        window_.setMoving(editor_.moving());
         const InputEvents e = window_.takeEvents();
-        Camera& camera = session_.scene().camera;
-        DirtyFlags dirty = kDirtyNone;
-        if (e.orbitX != 0 || e.orbitY != 0) {
-            controller_.orbit(camera, e.orbitX, e.orbitY);
-            dirty |= kDirtyCamera;
-        }
-        if (e.panX != 0 || e.panY != 0) {  // the drag in framebuffer pixels against the image's height on screen
-            controller_.pan(camera, e.panX * framebufferScale_, e.panY * framebufferScale_, imageRect().height);
-            dirty |= kDirtyCamera;
-        }
+        const bool flying = navigate(e, dt);
         if (e.viewPanX != 0 || e.viewPanY != 0)
             view_.panBy(e.viewPanX * framebufferScale_, e.viewPanY * framebufferScale_, area_, session_.renderWidth(),
                         session_.renderHeight());
         if (e.zoom != 0)
             view_.zoomBy(std::pow(kZoomStep, e.zoom), e.zoomAt.x * framebufferScale_, e.zoomAt.y * framebufferScale_,
                          area_, session_.renderWidth(), session_.renderHeight());
-        if (e.scroll != 0) {
-            controller_.dolly(camera, e.scroll);
-            dirty |= kDirtyCamera;
+        for (const CursorPoint& c : e.clicks) {
+            if (auto p = view_.imagePoint(c.x * framebufferScale_, c.y * framebufferScale_, area_,
+                                          session_.renderWidth(), session_.renderHeight()))
+                editor_.click(*p);
         }
-        for (const ViewerCommand command : e.commands) dirty |= execute(command);
+        if (e.moveStarted) editor_.beginMove(toImage(e.moveStart));
+        if (editor_.moving() && editor_.updateMove(toImage(window_.cursor()), e.scroll)) {
+            stats_.moveInput(Clock::now());
+            markEdited(kDirtyScene);
+        }
+        if (e.moveEnded) markEdited(editor_.confirmMove());
+        for (const ViewerCommand command : e.commands) markEdited(execute(command));
+        for (const std::string& path : e.drops) requestOpen(path);
+        return flying;
+    }
+
+    // The camera's navigation: orbit, pan, dolly (the wheel, unless a move takes it), fly; each an edit.
+    bool navigate(const InputEvents& e, double dt) {
+        Camera& camera = session_.scene().camera;
+        const auto moved = [&](const Camera& before, const char* kind) {
+            editor_.cameraMoved(before, kind);
+            markEdited(kDirtyCamera);
+        };
+        const Camera before = camera;
+        if (e.orbitX != 0 || e.orbitY != 0) {
+            controller_.orbit(camera, e.orbitX, e.orbitY);
+            moved(before, "Orbit");
+        }
+        if (e.panX != 0 || e.panY != 0) {  // the drag in framebuffer pixels against the image's height on screen
+            controller_.pan(camera, e.panX * framebufferScale_, e.panY * framebufferScale_, imageRect().height);
+            moved(before, "Pan");
+        }
+        if (e.scroll != 0 && !editor_.moving()) {
+            controller_.dolly(camera, e.scroll);
+            moved(before, "Dolly");
+        }
         const FlyKeys fly = window_.flyKeys();
         if (fly.moving()) {
             controller_.fly(camera, fly.forward, fly.right, fly.up, float(dt));
-            dirty |= kDirtyCamera;
+            moved(before, "Fly");
         }
-        markEdited(dirty);
         return fly.moving();
     }
 
-    // One command, from a key or a panel button; what of the scene it changed.
+    // One command, from a key, the menu or a panel button; what of the scene it changed.
     DirtyFlags execute(ViewerCommand command) {
         Camera& camera = session_.scene().camera;
+        const Camera before = camera;
         switch (command) {
             case ViewerCommand::FrameScene:
                 controller_.frame(camera, sceneBounds(session_.arrays()));
+                editor_.cameraMoved(before, "Frame");
                 return kDirtyCamera;
             case ViewerCommand::ResetCamera:
                 controller_.reset(camera, session_.fileScene().camera);
+                editor_.cameraMoved(before, "Reset");
                 return kDirtyCamera;
             case ViewerCommand::Screenshot: screenshotPending_ = true; break;
-            case ViewerCommand::SaveScene: exports_.saveScene(session_.scene(), state_); break;
+            case ViewerCommand::SaveScene: saveScene(); break;
             case ViewerCommand::Quit: window_.requestClose(); break;
+            case ViewerCommand::Undo: return resized(editor_.undo());
+            case ViewerCommand::Redo: return resized(editor_.redo());
             case ViewerCommand::FitView: view_.fit(); break;
             case ViewerCommand::ActualPixels: view_.actualPixels(); break;
             case ViewerCommand::ZoomIn:
@@ -254,31 +334,128 @@ private:
                              area_.x + 0.5f * area_.width, area_.y + 0.5f * area_.height, area_,
                              session_.renderWidth(), session_.renderHeight());
                 break;
-            default: break;
+            case ViewerCommand::Grab: editor_.beginMove(toImage(window_.cursor())); break;
+            case ViewerCommand::Confirm: return editor_.confirmMove() & ~kDirtyScene;  // the moves marked it
+            case ViewerCommand::Cancel:
+                if (editor_.moving()) return editor_.cancelMove();
+                editor_.clearSelection();
+                break;
+            case ViewerCommand::Delete: return editor_.deleteSelected();
+            case ViewerCommand::Duplicate: {
+                const DirtyFlags dirty = editor_.duplicateSelected();
+                if (dirty) editor_.beginMove(toImage(window_.cursor()));  // the copy follows the mouse, as G
+                return dirty;
+            }
+            case ViewerCommand::AddSphere: return editor_.addSphere(camera.poi);
+            case ViewerCommand::OpenPrompt: state_.focusOpenPath = true; break;
         }
         return kDirtyNone;
     }
 
-    void apply(const PanelActions& a) {
-        DirtyFlags dirty = a.dirty;
-        if (a.frameScene) dirty |= execute(ViewerCommand::FrameScene);
-        if (a.resetCamera) dirty |= execute(ViewerCommand::ResetCamera);
-        if (a.restart) dirty |= kDirtyCamera;
+    // Edits that change the render size reallocate (an undo of a Scene settings edit, say).
+    DirtyFlags resized(DirtyFlags dirty) {
         if (dirty & kDirtySize)
             session_.setRenderSize(uint32_t(session_.scene().settings.renderWidth),
                                    uint32_t(session_.scene().settings.renderHeight));
+        return dirty;
+    }
+
+    void apply(const PanelActions& a) {
+        DirtyFlags dirty = resized(a.dirty);
+        if (a.restart) dirty |= kDirtyCamera;
         markEdited(dirty);
         if (a.switchBackend) switchBackend(state_.backend);
         if (a.screenshot) execute(ViewerCommand::Screenshot);
         if (a.newScreenshotName) exports_.renameScreenshot(state_);
         if (a.saveScene) execute(ViewerCommand::SaveScene);
+        if (a.targetErrorChanged) session_.setTargetError(state_.targetErrorPercent / 100.0);
+        if (a.open) requestOpen(state_.openPath);
         for (const ViewerCommand command : a.commands) markEdited(execute(command));
     }
 
-    // Edits restart the image, at preview size for kPreviewHoldSeconds.
+    // Edits restart the image, at preview size for kPreviewHoldSeconds; the outline waits for the new image.
     void markEdited(DirtyFlags dirty) {
-        if (dirty) lastEdit_ = Clock::now();
+        if (!dirty) return;
+        lastEdit_ = Clock::now();
         session_.markDirty(dirty);
+        editor_.invalidateOutline();
+    }
+
+    bool saveScene() {
+        if (!exports_.saveScene(session_.scene(), state_)) return false;
+        editor_.saved();
+        return true;
+    }
+
+    // Opening another scene, or quitting, with unsaved edits asks first (drawDialogs).
+    enum class Pending { None, Quit, Open };
+    void ask(Pending what, const std::string& path = "") {
+        pending_ = what;
+        pendingPath_ = path;
+        askingUnsaved_ = true;
+    }
+
+    void requestOpen(const std::string& path) {
+        if (editor_.unsaved()) ask(Pending::Open, path);
+        else openNow(path);
+    }
+
+    // Reads the scene as at start; on errors the messages go to the Open panel and stderr, the scene stays.
+    void openNow(const std::string& path) {
+        OpenedScene opened = openSceneFile(path);
+        for (const std::string& m : opened.messages) std::fprintf(stderr, "%s\n", m.c_str());
+        if (opened.scene) {
+            try {
+                if (editor_.moving()) editor_.cancelMove();
+                session_.replaceScene(std::move(*opened.scene));
+            } catch (const std::exception& e) {
+                opened.messages = {path + ": " + e.what()};
+                opened.scene.reset();
+            }
+        }
+        if (!opened.scene) {
+            std::fprintf(stderr, "trazo: cannot open %s; the current scene stays\n", path.c_str());
+            state_.openMessages = std::move(opened.messages);
+            return;
+        }
+        state_.openMessages.clear();
+        scenePath_ = path;
+        editor_.opened(path);
+        exports_ = ExportController(path, "", state_);
+        lastEdit_ = Clock::now();
+        std::fprintf(stderr, "trazo: opened %s\n", path.c_str());
+    }
+
+    void drawDialogs() {
+        switch (drawQuitDialog(askingUnsaved_, state_.scenePath)) {
+            case QuitAnswer::Save:
+                if (saveScene()) proceed();
+                break;
+            case QuitAnswer::Discard: proceed(); break;
+            case QuitAnswer::Cancel: pending_ = Pending::None; break;
+            case QuitAnswer::None: break;
+        }
+        switch (drawRecoveryDialog(askingRecovery_, recoveryPath_)) {
+            case RecoveryAnswer::Restore: {
+                DirtyFlags dirty = kDirtyNone;
+                if (editor_.restoreRecovery(state_.openMessages, dirty)) markEdited(resized(dirty));
+                break;
+            }
+            case RecoveryAnswer::Discard: editor_.discardRecovery(); break;
+            case RecoveryAnswer::Keep:
+            case RecoveryAnswer::None: break;
+        }
+    }
+
+    // What waited for the unsaved-edits question.
+    void proceed() {
+        const Pending what = std::exchange(pending_, Pending::None);
+        if (what == Pending::Quit) {
+            quitConfirmed_ = true;
+            window_.requestClose();
+        } else if (what == Pending::Open) {
+            openNow(pendingPath_);
+        }
     }
 
     BackendChoice runningBackend() const {
@@ -329,6 +506,8 @@ private:
             info.mraysPerSecond = double(session_.rays()) / info.elapsedSeconds * 1e-6;
         }
         for (const Diagnostic& d : session_.flattenWarnings().items) info.unsupported.push_back(formatDiagnostic(d));
+        for (const ConvergencePoint& p : session_.convergence()) info.convergence.emplace_back(p.seconds, p.relError);
+        info.targetReached = session_.targetReached();
         return info;
     }
 
@@ -357,10 +536,12 @@ private:
     const ViewerOptions& options_;
     Window& window_;
     ViewerSession& session_;
+    std::string scenePath_, title_;
     CameraController controller_;
     PanelState state_;
     ExportController exports_;
     ViewerStats stats_;
+    SceneEditor editor_;
     bool cudaBuilt_ = false;
     bool screenshotPending_ = false;
     bool imageShown_ = false, fullImageShown_ = false;
@@ -370,6 +551,10 @@ private:
     ViewTransform view_;
     ImageRect area_;
     float menuHeight_ = 0, framebufferScale_ = 1;
+    std::vector<uint8_t> outline_;
+    bool askingUnsaved_ = false, askingRecovery_ = false, quitConfirmed_ = false;
+    Pending pending_ = Pending::None;
+    std::string pendingPath_, recoveryPath_;
 };
 
 // HiDPI: the font is made at the screen's content scale and drawn at 1 / (framebuffer pixels per window

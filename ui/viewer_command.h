@@ -10,7 +10,10 @@ enum class ViewerCommand {
     Grab,     // G: move the selection with the mouse
     Confirm,  // Enter, or a left click during a move
     Cancel,   // Escape, or a right click during a move: ends the move, else clears the selection
-    Delete, Duplicate,
+    Delete,
+    Duplicate,  // then a move of the copy, as G
+    AddSphere,  // at the point the camera looks at
+    OpenPrompt, // the Open panel's path field takes the keys
 };
 
 }  // namespace trazo

@@ -32,8 +32,17 @@ bool commandForKey(int key, int mods, ViewerCommand& command) {
             case GLFW_KEY_Z: command = shift ? ViewerCommand::Redo : ViewerCommand::Undo; return true;
             case GLFW_KEY_Y: command = ViewerCommand::Redo; return true;
             case GLFW_KEY_D: command = ViewerCommand::Duplicate; return true;
+            case GLFW_KEY_O: command = ViewerCommand::OpenPrompt; return true;
             default: return false;
         }
+    }
+    if (shift && key == GLFW_KEY_D) {
+        command = ViewerCommand::Duplicate;
+        return true;
+    }
+    if (shift && key == GLFW_KEY_A) {
+        command = ViewerCommand::AddSphere;
+        return true;
     }
     switch (key) {
         case GLFW_KEY_F: command = ViewerCommand::FrameScene; return true;
@@ -51,7 +60,8 @@ bool commandForKey(int key, int mods, ViewerCommand& command) {
         case GLFW_KEY_ENTER:
         case GLFW_KEY_KP_ENTER: command = ViewerCommand::Confirm; return true;
         case GLFW_KEY_ESCAPE: command = ViewerCommand::Cancel; return true;
-        case GLFW_KEY_DELETE: command = ViewerCommand::Delete; return true;
+        case GLFW_KEY_DELETE:
+        case GLFW_KEY_X: command = ViewerCommand::Delete; return true;
         default: return false;
     }
 }
@@ -165,7 +175,8 @@ bool Window::takeActivity() {
 bool Window::keyDown(int key) const { return !uiKeyboard_ && glfwGetKey(window_, key) == GLFW_PRESS; }
 
 FlyKeys Window::flyKeys() const {
-    if (keyDown(GLFW_KEY_LEFT_CONTROL) || keyDown(GLFW_KEY_RIGHT_CONTROL)) return {};
+    for (const int modifier : {GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL, GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT})
+        if (keyDown(modifier)) return {};  // Ctrl+S, Shift+D, Shift+A: commands, not flights
     FlyKeys fly;
     fly.forward = float(keyDown(GLFW_KEY_W)) - float(keyDown(GLFW_KEY_S));
     fly.right = float(keyDown(GLFW_KEY_D)) - float(keyDown(GLFW_KEY_A));

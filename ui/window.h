@@ -70,7 +70,7 @@ public:
     // True when any window event (input, resize, expose, focus) arrived since the last call: the frame loop
     // redraws only then, or when the image changed, so the UI leaves the cores to the renderer.
     bool takeActivity();
-    // None while Ctrl is held (Ctrl+S saves, Ctrl+Q quits) or while ImGui has the keyboard.
+    // None while Ctrl or Shift is held (Ctrl+S saves, Shift+D duplicates) or while ImGui has the keyboard.
     FlyKeys flyKeys() const;
     bool dragging() const { return drag_ != Drag::None && drag_ != Drag::Pending; }
     CursorPoint cursor() const { return {float(cursorX_), float(cursorY_)}; }
