@@ -52,7 +52,9 @@ void main() {
     } else if (toneMode == 2) {
         c = srgbFromLinear(filmic(c));
     } else {
-        c = clamp(c, 0.0, 1.0);
+        // The PNG's byte, round(255·c) with halves up (image_writer.cpp), made here: GL's own conversion may
+        // round halves to even (Mesa's llvmpipe does), a byte off on a flat 0.3.
+        c = floor(255.0 * clamp(c, 0.0, 1.0) + 0.5) / 255.0;
     }
     fragColor = vec4(c, 1.0);
 }

@@ -49,13 +49,20 @@ bool MoveGesture::begin(const Scene& scene, ObjectId id, ImagePoint cursor, uint
     anchorOnScreen0_ = *onScreen;
     anchor0_ = anchor;
     applied_ = Vec3(0, 0, 0);
-    depth_ = viewDepth(scene.camera, anchor);
+    depth_ = depth0_ = viewDepth(scene.camera, anchor);
     return true;
 }
 
 bool MoveGesture::update(Scene& scene, ImagePoint cursor, float wheelNotches) {
     if (!active_) return false;
     if (wheelNotches != 0) depth_ *= std::pow(kDepthStep, wheelNotches);
+    // Back where it started: exactly where it was (the projection's round trip would leave a rounding step).
+    if (cursor.x == cursor0_.x && cursor.y == cursor0_.y && depth_ == depth0_) {
+        if (applied_.x == 0 && applied_.y == 0 && applied_.z == 0) return false;
+        translateObject(scene, id_, Vec3(0, 0, 0) - applied_);
+        applied_ = Vec3(0, 0, 0);
+        return true;
+    }
     const ImagePoint target{anchorOnScreen0_.x + cursor.x - cursor0_.x, anchorOnScreen0_.y + cursor.y - cursor0_.y};
     const Vec3 wanted = pointAtDepth(scene.camera, width_, height_, target, depth_) - anchor0_;
     const Vec3 step = wanted - applied_;

@@ -47,7 +47,7 @@ private:
     uint32_t width_ = 0, height_ = 0;
     ImagePoint cursor0_, anchorOnScreen0_;
     Vec3 anchor0_{0, 0, 0}, applied_{0, 0, 0};
-    float depth_ = 1.0f;
+    float depth_ = 1.0f, depth0_ = 1.0f;
 };
 
 }  // namespace trazo
