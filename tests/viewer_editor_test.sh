@@ -57,10 +57,9 @@ save() {  # Ctrl+S, then copies the saved scene to $1
     wait_log "^trazo: saved scene $edited\$" "$((from + 1))" || fail "Ctrl+S did not save the scene"
     cp "$edited" "$1"
 }
-open_path() {  # Ctrl+O focuses the Open panel's path field; the path is typed and Enter opens it
+open_path() {  # Ctrl+O focuses the Open panel's path field, all selected; the path typed over it, Enter opens
     key ctrl+o
     sleep 0.3
-    key ctrl+a
     xdotool type --delay 15 "$1"
     key Return
 }

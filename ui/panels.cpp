@@ -118,7 +118,9 @@ void drawExportPanel(PanelState& state, PanelActions& actions) {
 void drawOpenPanel(PanelState& state, PanelActions& actions) {
     if (state.focusOpenPath) ImGui::SetKeyboardFocusHere();
     state.focusOpenPath = false;
-    if (ImGui::InputText("Path", state.openPath, sizeof state.openPath, ImGuiInputTextFlags_EnterReturnsTrue))
+    // Focused (a click, Ctrl+O), the whole path is selected: typing replaces it.
+    if (ImGui::InputText("Path", state.openPath, sizeof state.openPath,
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll))
         actions.open = true;
     ImGui::SameLine();
     if (ImGui::Button("Open")) actions.open = true;

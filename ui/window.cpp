@@ -175,12 +175,11 @@ bool Window::takeActivity() {
 bool Window::keyDown(int key) const { return !uiKeyboard_ && glfwGetKey(window_, key) == GLFW_PRESS; }
 
 FlyKeys Window::flyKeys() const {
-    for (const int modifier : {GLFW_KEY_LEFT_CONTROL, GLFW_KEY_RIGHT_CONTROL, GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT})
-        if (keyDown(modifier)) return {};  // Ctrl+S, Shift+D, Shift+A: commands, not flights
+    const auto held = [&](int key) { return keyDown(key) && !commandKeys_.count(key); };
     FlyKeys fly;
-    fly.forward = float(keyDown(GLFW_KEY_W)) - float(keyDown(GLFW_KEY_S));
-    fly.right = float(keyDown(GLFW_KEY_D)) - float(keyDown(GLFW_KEY_A));
-    fly.up = float(keyDown(GLFW_KEY_E)) - float(keyDown(GLFW_KEY_Q));
+    fly.forward = float(held(GLFW_KEY_W)) - float(held(GLFW_KEY_S));
+    fly.right = float(held(GLFW_KEY_D)) - float(held(GLFW_KEY_A));
+    fly.up = float(held(GLFW_KEY_E)) - float(held(GLFW_KEY_Q));
     return fly;
 }
 void Window::windowSize(int& width, int& height) const { glfwGetWindowSize(window_, &width, &height); }
@@ -264,6 +263,10 @@ void Window::onScroll(double dy) {
 
 void Window::onKey(int key, int action, int mods) {
     activity_ = true;
+    // A key pressed with a modifier (Ctrl+S, Shift+D, Shift+A) is a command until released, never a flight. The
+    // event's modifiers, not glfwGetKey's Ctrl: xdotool's Ctrl may come on a key code GLFW does not name.
+    if (action == GLFW_PRESS && (mods & (GLFW_MOD_CONTROL | GLFW_MOD_SHIFT | GLFW_MOD_ALT))) commandKeys_.insert(key);
+    else if (action == GLFW_RELEASE) commandKeys_.erase(key);
     ViewerCommand command;
     if (action == GLFW_PRESS && !uiKeyboard_ && commandForKey(key, mods, command)) events_.commands.push_back(command);
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -70,7 +71,8 @@ public:
     // True when any window event (input, resize, expose, focus) arrived since the last call: the frame loop
     // redraws only then, or when the image changed, so the UI leaves the cores to the renderer.
     bool takeActivity();
-    // None while Ctrl or Shift is held (Ctrl+S saves, Shift+D duplicates) or while ImGui has the keyboard.
+    // Keys pressed with Ctrl, Shift or Alt (Ctrl+S saves, Shift+D duplicates) do not fly, nor any while ImGui
+    // has the keyboard.
     FlyKeys flyKeys() const;
     bool dragging() const { return drag_ != Drag::None && drag_ != Drag::Pending; }
     CursorPoint cursor() const { return {float(cursorX_), float(cursorY_)}; }
@@ -102,6 +104,7 @@ private:
     int dragButton_ = -1;
     double cursorX_ = 0, cursorY_ = 0, pressX_ = 0, pressY_ = 0;
     InputEvents events_;
+    std::set<int> commandKeys_;  // pressed with a modifier, not released yet
     bool activity_ = true;
 };
 
