@@ -37,8 +37,8 @@ fail() {
     exit 1
 }
 log_has() { grep -q -- "$1" "$work/viewer.log"; }
-wait_log() {  # up to 20 s for a line matching $1 (grep -E), counted from line $2 of the log on
-    for _ in $(seq 200); do
+wait_log() {  # up to 20 s (or $3 tenths) for a line matching $1 (grep -E), counted from line $2 of the log on
+    for _ in $(seq "${3:-200}"); do
         tail -n +"${2:-1}" "$work/viewer.log" | grep -Eq -- "$1" && return 0
         sleep 0.1
     done
@@ -50,18 +50,29 @@ click_at() {  # left click at window coordinates
     xdotool mousemove --window "$wid" "$1" "$2" sleep 0.2 click 1
     sleep 0.3
 }
-save() {  # Ctrl+S, then copies the saved scene to $1
+save() {  # Ctrl+S (again if the key was lost), then copies the saved scene to $1
     local from
     from=$(lines)
-    key ctrl+s
-    wait_log "^trazo: saved scene $edited\$" "$((from + 1))" || fail "Ctrl+S did not save the scene"
-    cp "$edited" "$1"
+    for _ in 1 2 3; do
+        key ctrl+s
+        wait_log "^trazo: saved scene $edited\$" "$((from + 1))" 50 && { cp "$edited" "$1"; return 0; }
+    done
+    fail "Ctrl+S did not save the scene"
 }
-open_path() {  # Ctrl+O focuses the Open panel's path field, all selected; the path typed over it, Enter opens
-    key ctrl+o
-    sleep 0.3
-    xdotool type --delay 15 "$1"
-    key Return
+open_path() {  # $1, expecting a log line matching $2: Ctrl+O focuses the Open panel's path field (all of it
+    # selected), the path is typed over it, Enter opens. Keys typed before the field has the focus are lost:
+    # tried again, like a user would.
+    local from
+    from=$(lines)
+    for _ in 1 2 3; do
+        key ctrl+o
+        sleep 0.7
+        xdotool type --delay 20 "$1"
+        sleep 0.2
+        key Return
+        wait_log "$2" "$((from + 1))" 60 && return 0
+    done
+    return 1
 }
 
 # Python helpers: an XWD window dump and a 24-bit BMP as rows of RGB triples; the image searched for in the
@@ -229,9 +240,8 @@ save "$work/added.scene"
 [ "$(grep -c '^Sphere' "$work/added.scene")" -eq 3 ] || fail "Shift+A did not save a third sphere"
 grep -A3 '^Sphere' "$work/added.scene" | grep -q 'Center 0 0 0' || fail "the added sphere is not at the POI"
 cp "$work/added.scene" "$work/reload.scene"
-from=$(lines)
-open_path "$work/reload.scene"
-wait_log "^trazo: opened $work/reload.scene\$" "$((from + 1))" || fail "Ctrl+O and a typed path did not open the saved scene"
+open_path "$work/reload.scene" "^trazo: opened $work/reload.scene\$" ||
+    fail "Ctrl+O and a typed path did not open the saved scene"
 edited="$work/reload-edited.scene"
 save "$work/resaved.scene"
 cmp "$work/added.scene" "$work/resaved.scene" || fail "the reopened scene does not save as it was read"
@@ -239,8 +249,7 @@ echo "ok: (d) duplicate, delete and add round-trip through save and reload"
 
 # (e) A malformed scene: the messages, the viewer still running with its scene.
 from=$(lines)
-open_path "$work/bad.scene"
-wait_log "^trazo: cannot open $work/bad.scene; the current scene stays\$" "$((from + 1))" ||
+open_path "$work/bad.scene" "^trazo: cannot open $work/bad.scene; the current scene stays\$" ||
     fail "opening a malformed scene did not say so"
 tail -n +"$((from + 1))" "$work/viewer.log" | grep -q "^$work/bad.scene:4:.*error:" || fail "no file:line message"
 kill -0 "$pid" 2>/dev/null || fail "the viewer did not survive a malformed scene"
