@@ -157,7 +157,13 @@ void ViewerSession::applyEdits() {
 void ViewerSession::uploadScene() {
     UploadReport report;
     const auto t0 = std::chrono::steady_clock::now();
-    FlattenResult next = flatten(scene_, uploadAll_ ? nullptr : &flat_);
+    FlattenResult next;
+    try {
+        next = flatten(scene_, uploadAll_ ? nullptr : &flat_);
+    } catch (...) {
+        uploadAll_ = true;  // flat_ may have lost arrays to the failed flatten: never reuse it
+        throw;
+    }
     report.flattenSeconds = secondsSince(t0);
     report.meshesRebuilt = next.meshesBuilt;
     report.meshesReused = next.meshesReused;

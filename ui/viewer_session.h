@@ -1,6 +1,6 @@
 // ViewerSession: the model behind the viewer window: the edited scene, its backend and the progressive
-// accumulation. Edits mark what changed; applyEdits() re-flattens and re-uploads (or only resets, for the
-// camera) and restarts the accumulation. Passes run in batches on a worker thread, so the window stays
+// accumulation. Edits mark what changed; applyEdits() re-flattens (reusing unchanged meshes' BVHs) and sends
+// the backend only the arrays that differ (or only resets, for the camera), and restarts the accumulation. Passes run in batches on a worker thread, so the window stays
 // responsive while the backend works. No window and no GL: the tests drive it directly.
 //
 // Blocks of strata (integrator/strata.h) start at one stratum per pass, so the first image after an edit is as
@@ -114,7 +114,9 @@ public:
     double targetError() const { return targetError_; }
     bool targetReached() const { return targetReached_; }
 
-    // Batches of passes, one at a time. startPasses applies pending edits first.
+    // Batches of passes, one at a time. startPasses applies pending edits first, and starts nothing once the
+    // target error is reached. A batch may end before `count`: at the segment's cycle end while blocks grow,
+    // and at an even cycle end when an error estimate is due (the pixels do not depend on batching).
     void startPasses(uint32_t count);
     void renderPasses(uint32_t count) {  // synchronous (tests, automation)
         startPasses(count);

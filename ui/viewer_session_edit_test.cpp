@@ -117,7 +117,9 @@ TEST(ViewerSessionPick, ObjectIdsAgreeWithPickAtEveryPixel) {
             const std::optional<PickHit> hit = session.pick(x + 0.5f, y + 0.5f);
             const std::optional<ObjectId> mapped = session.objectOf(ids[y * 32 + x]);
             ASSERT_EQ(hit.has_value(), mapped.has_value()) << x << "," << y;
-            if (hit) EXPECT_EQ(hit->object, *mapped) << x << "," << y;
+            if (hit) {
+                EXPECT_EQ(hit->object, *mapped) << x << "," << y;
+            }
             if (mapped && *mapped == ObjectId{ObjectId::Kind::AreaLight, 0}) ++light;
         }
     }
@@ -134,9 +136,26 @@ TEST(ViewerSessionPick, PicksFollowEditsAndMissesAreEmpty) {
     EXPECT_FALSE(session.pick(0.5f, 0.5f).has_value());  // a corner: background
     ASSERT_TRUE(session.pick(16.0f, 12.0f).has_value());
     EXPECT_EQ(session.pick(16.0f, 12.0f)->object, (ObjectId{ObjectId::Kind::Sphere, 0}));
-    session.scene().spheres[0].center = Vec3(0, 0, -100);  // pending: pick applies it first
+    session.scene().spheres[0].center = Vec3(0, -100, 0);  // pending: pick applies it first
     session.markDirty(kDirtyScene);
     EXPECT_FALSE(session.pick(16.0f, 12.0f).has_value());
+}
+
+// The CUDA backend's object queries (rayAnswerKernel) and partial uploads give the CPU's answers.
+TEST(ViewerSessionPick, CudaAnswersTheSameObjects) {
+    std::string why;
+    std::unique_ptr<Backend> cuda = createBackend(BackendChoice::Cuda, 0, why);
+    if (!cuda) GTEST_SKIP() << "no CUDA backend: " << why;
+    ViewerSession onCpu(pickScene(), createCpuBackend(2), 0), onGpu(pickScene(), std::move(cuda), 0);
+    for (int edit = 0; edit < 2; ++edit) {
+        EXPECT_EQ(onCpu.objectIds(64, 48), onGpu.objectIds(64, 48)) << "edit " << edit;
+        for (ViewerSession* s : {&onCpu, &onGpu}) {  // a partial upload: spheres and topNodes
+            s->scene().spheres[1].center.x -= 0.7f;
+            s->markDirty(kDirtyScene);
+            s->applyEdits();
+        }
+        EXPECT_EQ(onGpu.lastUpload().changed, onCpu.lastUpload().changed);
+    }
 }
 
 // A sphere, a cylinder, a 2-triangle mesh, lights, two materials: every kind of edit the panels make.
@@ -171,24 +190,32 @@ TEST(ViewerSessionUpload, EachKindOfEditResendsExactlyItsArrays) {
         {"sphere moved", kDirtyScene, [](Scene& s) { s.spheres[1].center.y += 0.1f; }, "spheres topNodes"},
         {"mesh moved", kDirtyScene,
          [](Scene& s) { s.meshes[0].transforms.push_back({TransformStep::Kind::Translation, Vec3(0, 0.1f, 0), 0.0f}); },
-         "meshNodes triangles triangleCorners topNodes"},
+         "meshNodes triangles topNodes"},  // a translation leaves normals, tangents and uvs (the corners) as they were
         {"point light", kDirtyScene, [](Scene& s) { s.pointLights[0].position.x = 1.0f; }, "pointLights"},
         {"area light", kDirtyScene, [](Scene& s) { s.areaLights[0].width = 2.0f; }, "areaLights"},
         {"setting", kDirtyScene, [](Scene& s) { s.settings.backgroundColor = Vec3(0.1f); }, "values"},
+        // A top level one object larger or smaller: its depth, and so traversalStackNeed (a value), changes too.
         {"sphere added", kDirtyScene, [](Scene& s) { s.spheres.push_back(Sphere{kDefaultMaterial, Vec3(-1, 2, 0), 0.3f, {}}); },
-         "spheres objects topNodes"},
-        {"sphere deleted", kDirtyScene, [](Scene& s) { s.spheres.erase(s.spheres.begin() + 1); }, "spheres objects topNodes"},
+         "spheres objects topNodes values"},
+        {"sphere deleted", kDirtyScene, [](Scene& s) { s.spheres.erase(s.spheres.begin() + 1); },
+         "spheres objects topNodes values"},
     };
     for (const EditCase& c : cases) {
         ViewerSession session(editScene(), createCpuBackend(2), 0, 16, 12);
         session.renderPasses(2);
+        const uint32_t stackBefore = session.arrays().traversalStackNeed;
         c.edit(session.scene());
         session.markDirty(c.flags);
         session.applyEdits();
         const UploadReport& r = session.lastUpload();
+        if (std::string(c.what).find("sphere ") == 0 && std::string(c.what) != "sphere moved") {
+            EXPECT_NE(session.arrays().traversalStackNeed, stackBefore) << c.what;
+        }
         EXPECT_EQ(describeArrays(r.changed), c.changed) << c.what;
         EXPECT_EQ(r.meshesRebuilt, std::string(c.what) == "mesh moved" ? 1u : 0u) << c.what;
-        if (c.flags == kDirtyScene && std::string(c.what) != "mesh moved") EXPECT_EQ(r.meshesReused, 1u) << c.what;
+        if (c.flags == kDirtyScene && std::string(c.what) != "mesh moved") {
+            EXPECT_EQ(r.meshesReused, 1u) << c.what;
+        }
         // What the backend now holds renders exactly what a fresh session of the edited scene renders.
         session.renderPasses(3);
         ViewerSession fresh(session.scene(), createCpuBackend(2), 0, 16, 12);

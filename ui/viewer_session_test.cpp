@@ -103,6 +103,30 @@ TEST(ViewerSession, MaterialEditReuploadsAndRestarts) {
     EXPECT_EQ(calls.reset, resets + 1);
 }
 
+// The backend is told which arrays changed; a replaced scene that cannot be uploaded leaves the old one.
+TEST(ViewerSession, UploadsNameTheChangedArraysAndAFailedReplaceKeepsTheScene) {
+    RecordingBackend::Calls calls;
+    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
+    EXPECT_EQ(calls.lastChanged, kAllArrays);  // the first upload: everything
+    session.scene().materials[1].diffuseColor = Vec3(0.2f, 0.3f, 0.4f);
+    session.markDirty(kDirtyScene);
+    session.applyEdits();
+    EXPECT_EQ(describeArrays(calls.lastChanged), "materials");
+
+    const size_t spheres = session.scene().spheres.size();
+    Scene other = readScene("scenes/scene3_csg.scene");
+    calls.failUploads = true;
+    EXPECT_THROW(session.replaceScene(other), std::runtime_error);
+    EXPECT_EQ(session.scene().spheres.size(), spheres);
+    EXPECT_EQ(session.fileScene().path, readScene("scenes/scene1_area.scene").path);
+    EXPECT_EQ(session.renderWidth(), 16u);
+    calls.failUploads = false;
+    session.renderPasses(1);  // the next batch re-sends the old scene whole (the backend may hold part of either)
+    EXPECT_EQ(calls.lastChanged, kAllArrays);
+    EXPECT_EQ(calls.lastUpload.spheres.size(), spheres);
+    EXPECT_EQ(session.passes(), 1u);
+}
+
 TEST(ViewerSession, CameraEditResetsWithoutUpload) {
     RecordingBackend::Calls calls;
     ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);

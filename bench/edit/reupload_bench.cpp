@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     scene.settings.renderWidth = scene.settings.renderHeight = 512;
-    scene.spheres.push_back(Sphere{kDefaultMaterial, Vec3(1.6f, 0.0f, 0.0f), 0.3f, {}});
+    scene.spheres.push_back(Sphere{kDefaultMaterial, Vec3(1.35f, 0.9f, 0.0f), 0.25f, {}});
     size_t triangles = 0;
     for (const Mesh& m : scene.meshes) triangles += m.data ? m.data->corners.size() / 3 : 0;
     std::printf("scene %s: %zu triangles in %zu meshes, %zu spheres\n", argv[1], triangles, scene.meshes.size(),
@@ -139,5 +139,16 @@ int main(int argc, char** argv) {
         idsS.push_back(secondsSince(t0));
     }
     std::printf("pick: %.3f ms; objectIds(512, 512): %.2f ms\n", 1e3 * median(pickS), 1e3 * median(idsS));
+
+    // One convergence point's cost at 512 × 512: the accumulation read back and estimateError.
+    std::vector<double> estimateS;
+    for (int r = 0; r < repeat; ++r) {
+        const auto t0 = Clock::now();
+        std::vector<AccumPixel> accum;
+        session.backend().readAccumulation(accum);
+        (void)estimateError(accum);
+        estimateS.push_back(secondsSince(t0));
+    }
+    std::printf("error estimate at %ux%u: %.2f ms\n", session.width(), session.height(), 1e3 * median(estimateS));
     return 0;
 }
