@@ -126,9 +126,9 @@ TEST(EditHistory, DepthAndMemoryAreBounded) {
         states.push_back(text(scene));
     }
     EXPECT_EQ(history.undoSteps(), 5u);
+    EXPECT_EQ(history.bytes(), 5 * snapshotBytes(Scene(scene)));  // copies: every vector as long as it holds
     while (history.undo(scene)) {}
     EXPECT_EQ(text(scene), states[3]);  // the 3 oldest steps were dropped
-    EXPECT_EQ(history.bytes(), 5 * snapshotBytes(scene));
 
     EditHistory small(200, 3 * snapshotBytes(scene));
     for (int i = 0; i < 8; ++i) moveSphere(scene, small, 0.5f);
@@ -225,11 +225,15 @@ TEST(EditHistory, SnapshotsShareMeshesAndCostTheirParameters) {
     const size_t bytes = snapshotBytes(scene);
     EXPECT_GE(bytes, 10000 * (sizeof(Sphere) + scene.path.size()));
     EXPECT_LE(bytes, 10000 * (sizeof(Sphere) + 2 * scene.path.size() + 64));
-    const auto start = std::chrono::steady_clock::now();
-    const Scene snapshot = scene;
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_EQ(snapshot.spheres.size(), 10000u);
-    std::printf("snapshot of 10^4 spheres: %zu bytes, copied in %.3f ms\n", bytes, ms);
+    double fastest = 1e30;
+    for (int i = 0; i < 5; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        const Scene snapshot = scene;
+        fastest = std::min(fastest, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        EXPECT_EQ(snapshot.spheres.size(), 10000u);
+    }
+    std::printf("snapshot of 10^4 spheres: %zu bytes, copied in %.3f ms (fastest of 5); scene1_area: %zu bytes\n",
+                bytes, fastest, snapshotBytes(Scene(seedScene())));
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 
 #include <imgui.h>
 
-#include <cstdio>
+#include <algorithm>
 
 #include "scene/block_table.h"
 
@@ -107,7 +107,7 @@ bool drawStep(TransformStep& step, Gestures& gestures) {
 }  // namespace
 
 DirtyFlags drawTransformSteps(std::vector<TransformStep>& steps, ObjectId::Kind kind, Gestures& gestures,
-                              std::string& status) {
+                              std::string& status, const MeshData* mesh) {
     std::vector<TransformStep> edited = steps;
     bool changed = false;
     for (size_t i = 0; i < edited.size(); ++i) {
@@ -136,7 +136,7 @@ DirtyFlags drawTransformSteps(std::vector<TransformStep>& steps, ObjectId::Kind 
         }
     }
     if (!changed) return kDirtyNone;
-    const std::string problem = transformProblem(edited, kind);
+    const std::string problem = transformProblem(edited, kind, mesh);
     if (!problem.empty()) {
         status = problem + "; the change was not made";
         return kDirtyNone;
@@ -146,26 +146,33 @@ DirtyFlags drawTransformSteps(std::vector<TransformStep>& steps, ObjectId::Kind 
 }
 
 void drawObjectList(const Scene& scene, ObjectsPanelState& state, ObjectsPanelActions& actions) {
-    const float rows = 8.5f;
-    if (!ImGui::BeginChild("object list", ImVec2(0, rows * ImGui::GetTextLineHeightWithSpacing()), true)) {
+    const float row = ImGui::GetTextLineHeightWithSpacing();
+    if (!ImGui::BeginChild("object list", ImVec2(0, 8.5f * row), true)) {
         ImGui::EndChild();
         return;
     }
-    for (const ObjectId id : listObjects(scene)) {
-        ImGui::PushID(int(id.kind));
-        ImGui::PushID(int(id.index));
-        const bool selected = state.selection == id;
-        if (ImGui::Selectable(describeObject(scene, id).c_str(), selected) && !selected) {
-            state.selection = id;
-            actions.selectionChanged = true;
-        }
-        if (selected && state.scrollToSelection) ImGui::SetScrollHereY();
-        const SourceLocation& where = objectWhere(scene, id);
-        if (!where.file.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s:%d", where.file.c_str(), where.line);
-        ImGui::PopID();
-        ImGui::PopID();
+    const std::vector<ObjectId> ids = listObjects(scene);
+    if (state.scrollToSelection && state.selection) {  // rows off screen are not drawn (the clipper): scroll by index
+        const auto at = std::find(ids.begin(), ids.end(), *state.selection);
+        ImGui::SetScrollY(float(at - ids.begin()) * row - 0.5f * ImGui::GetWindowHeight() + row);
     }
     state.scrollToSelection = false;
+    ImGuiListClipper clipper;
+    clipper.Begin(int(ids.size()), row);
+    while (clipper.Step()) {
+        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+            const ObjectId id = ids[size_t(i)];
+            ImGui::PushID(i);
+            const bool selected = state.selection == id;
+            if (ImGui::Selectable(describeObject(scene, id).c_str(), selected) && !selected) {
+                state.selection = id;
+                actions.selectionChanged = true;
+            }
+            const SourceLocation& where = objectWhere(scene, id);
+            if (!where.file.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s:%d", where.file.c_str(), where.line);
+            ImGui::PopID();
+        }
+    }
     ImGui::EndChild();
 }
 
@@ -235,12 +242,14 @@ DirtyFlags drawObjectEditor(Scene& scene, ObjectsPanelState& state, ObjectsPanel
     if (std::vector<TransformStep>* steps = objectTransforms(scene, id)) {
         ImGui::PushID("steps");
         ImGui::TextDisabled("Transforms, applied in this order:");
-        edits |= drawTransformSteps(*steps, id.kind, state.gestures, state.status);
+        const MeshData* mesh = id.kind == Kind::Mesh ? scene.meshes[id.index].data.get() : nullptr;
+        edits |= drawTransformSteps(*steps, id.kind, state.gestures, state.status, mesh);
         ImGui::PopID();
     }
     if (edits) {
         actions.label = editLabel;
         actions.gesture = state.gestures.edited;
+        actions.changedObject = id;
     }
     return dirty | edits;
 }

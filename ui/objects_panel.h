@@ -25,6 +25,9 @@ struct ObjectsPanelActions {
     std::string label;       // the undo step's name when something changed ("Edit Sphere 2", "Add Box 3")
     uint64_t gesture = 0;    // non-zero while a widget is held: the frames of one drag commit as one step
     bool selectionChanged = false;
+    // The one object whose parameters, material or transforms changed (what an incremental re-upload needs);
+    // none when objects were added or deleted (the arrays change length) or nothing changed.
+    Selection changedObject;
 };
 
 // The whole panel (draw it inside a window or a collapsing header). `viewCentre` is where new objects go
@@ -38,6 +41,6 @@ DirtyFlags drawObjectEditor(Scene& scene, ObjectsPanelState& state, ObjectsPanel
 // The steps of a Box, Mesh or CSG: kind, values, order; a change the reader would refuse is not made
 // (transformProblem's reason goes to `status`).
 DirtyFlags drawTransformSteps(std::vector<TransformStep>& steps, ObjectId::Kind kind, Gestures& gestures,
-                              std::string& status);
+                              std::string& status, const MeshData* mesh = nullptr);
 
 }  // namespace trazo

@@ -15,6 +15,12 @@ void trackGesture(Gestures& g, bool edited) {
     if (edited) g.edited = ImGui::IsItemActive() ? g.held : 0;
 }
 
+uint64_t heldGesture(Gestures& g) {
+    if (!ImGui::IsAnyItemActive()) return 0;
+    if (g.held == 0) g.held = beginGesture(g);
+    return g.held;
+}
+
 bool comboIndex(const char* label, int32_t& index, const std::vector<std::string>& names, const char* noneLabel) {
     const char* none = noneLabel ? noneLabel : "";
     const char* preview = index >= 0 && size_t(index) < names.size() ? names[size_t(index)].c_str() : none;

@@ -27,6 +27,9 @@ inline uint64_t beginGesture(Gestures& g) { return ++g.serial; }
 void startGestures(Gestures& g);
 // Call right after a widget, with whether it changed its value.
 void trackGesture(Gestures& g, bool edited);
+// For panels that do not track their widgets: the gesture of whatever widget is held now (a new one when
+// none was held at the last call since startGestures), 0 when none is held.
+uint64_t heldGesture(Gestures& g);
 
 // The widget of one row over `v` (which holds the edit); true when the user changed it.
 bool drawParamWidget(const ParamInfo& info, const ParamWidget& w, ParamValue& v);

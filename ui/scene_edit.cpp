@@ -364,7 +364,13 @@ bool moveTransformStep(std::vector<TransformStep>& steps, size_t i, int directio
     return true;
 }
 
-std::string transformProblem(const std::vector<TransformStep>& steps, ObjectId::Kind kind) {
+std::string transformProblem(const std::vector<TransformStep>& steps, ObjectId::Kind kind, const MeshData* mesh) {
+    if (mesh && kind == ObjectId::Kind::Mesh) {
+        const Vec3 extent = transformedBox(meshObjectBounds(mesh), steps).extent();
+        if (!(double(maxComponent(extent)) <= kMaxMeshExtent))
+            return "the mesh would span more than 1e9, where its triangles' normals no longer square inside single "
+                   "precision";
+    }
     if (steps.empty()) return {};
     const Affine3 m = composeTransforms(steps);
     const Affine3 inv = inverse(m);

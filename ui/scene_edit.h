@@ -49,7 +49,8 @@ float newObjectSize(const Camera& camera);
 
 // A new Sphere, Box, Cylinder, PointLight or AreaLight centred at `at`, `size` across (sphere diameter, box
 // edge, cylinder height and diameter, area light side), on the default material, appended to its kind. A
-// cylinder stands on +Y; an area light faces down (−Y), white; a point light is white.
+// cylinder stands on +Y; an area light faces down (−Y), white; a point light is white. A Mesh or CSG is read
+// from a file (addObjectFromFile): for those nothing is added and the id returned is not a valid one.
 ObjectId addObject(Scene& scene, ObjectId::Kind kind, Vec3 at, float size = 1.0f);
 // A new Mesh (an .obj) or CSG (a .csg) read from `path` (relative paths from the scene's folder), placed by
 // one Translation so that the centre of its bounds is at `at`, in the file's own units. A file another
@@ -83,7 +84,9 @@ void insertTransformStep(std::vector<TransformStep>& steps, size_t at, Transform
 // Swaps step i with its neighbour (direction −1: earlier, +1: later); false when there is none.
 bool moveTransformStep(std::vector<TransformStep>& steps, size_t i, int direction);
 // Why the reader would refuse the composed list, in words ("" when it would not): a map single precision
-// cannot hold or invert, or for a Box, face normals that leave single precision.
-std::string transformProblem(const std::vector<TransformStep>& steps, ObjectId::Kind kind);
+// cannot hold or invert; for a Box, face normals that leave single precision; for a Mesh whose `mesh` is
+// given, a span past 1e9 (the reader's limits, docs/LIMITS.md).
+std::string transformProblem(const std::vector<TransformStep>& steps, ObjectId::Kind kind,
+                             const MeshData* mesh = nullptr);
 
 }  // namespace trazo

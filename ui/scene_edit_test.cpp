@@ -41,9 +41,9 @@ struct EditScene {
             "Box {\n Material white\n Scale 2 2 2\n Translation 1 0.5 -3\n}\n"
             "Box {\n Material red\n Translation 1 2 3\n Rotation 0 1 0 0.75\n}\n"
             "Cylinder {\n Material red\n Base 0 -1 2\n Axis 0 1 0\n Height 3\n Radius 0.75\n}\n"
-            "CSG {\n Material white\n Source " + test::sourcePath("scenes/csg_example.csg") +
-            "\n Translation 0.5 0 1\n}\n"
-            "Mesh {\n Material white\n Source tetra.obj\n Scale 2 2 2\n Translation 4 0 -2\n}\n"
+            "CSG {\n Material white\n Source \"" + test::sourcePath("scenes/csg_example.csg") +
+            "\"\n Translation 0.5 0 1\n}\n"
+            "Mesh {\n Material white\n Source \"tetra.obj\"\n Scale 2 2 2\n Translation 4 0 -2\n}\n"
             "PointLight {\n Position 0 8 4\n Color 1 1 1\n}\n"
             "AreaLight {\n Position 0 6 0\n Direction 0 -1 0\n Width 2\n Height 1.5\n Color 4 4 4\n}\n";
         Diagnostics diags;
@@ -152,10 +152,9 @@ TEST(SceneEdit, ReplacingASourceKeepsTheTransformsAndMaterial) {
 
 TEST(SceneEdit, DeleteShiftsLaterIdsOfTheSameKindOnly) {
     EditScene e;
-    const std::string sphere2 = describeObject(e.scene, {Kind::Sphere, 2});
     EXPECT_EQ(deleteObject(e.scene, {Kind::Sphere, 1}), (ObjectId{Kind::Sphere, 1}));  // the next one moved in
-    EXPECT_EQ(describeObject(e.scene, {Kind::Sphere, 1}), sphere2);
-    EXPECT_EQ(e.scene.spheres[1].center.y, 0.0f);
+    EXPECT_EQ(describeObject(e.scene, {Kind::Sphere, 1}), "Sphere 1 (white)");
+    EXPECT_EQ(e.scene.spheres[1].radius, 1.0f);
     EXPECT_EQ(deleteObject(e.scene, {Kind::Sphere, 1}), (ObjectId{Kind::Sphere, 0}));  // the last: previous one
     EXPECT_EQ(deleteObject(e.scene, {Kind::Sphere, 0}), std::nullopt);                 // none left
     EXPECT_EQ(deleteObject(e.scene, {Kind::PointLight, 0}), std::nullopt);
@@ -283,6 +282,11 @@ TEST(SceneEdit, TransformStepsInsertMoveAndCheck) {
     const std::vector<TransformStep> huge = {{Step::Scale, Vec3(1e19f, 1, 1), 0}};
     EXPECT_EQ(transformProblem(huge, Kind::Mesh), "");
     EXPECT_NE(transformProblem(huge, Kind::Box), "");
+    // A mesh's span after its transforms: the unit triangle scaled by 1e9 is at the limit, by 2e9 past it.
+    MeshData triangle;
+    triangle.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    EXPECT_EQ(transformProblem({{Step::Scale, Vec3(1e9f), 0}}, Kind::Mesh, &triangle), "");
+    EXPECT_NE(transformProblem({{Step::Scale, Vec3(2e9f), 0}}, Kind::Mesh, &triangle), "");
 }
 
 TEST(SceneEdit, NewObjectsAreAFifthOfTheViewHigh) {
