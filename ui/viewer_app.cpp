@@ -1,7 +1,9 @@
-// The viewer's frame loop. Each frame: the window's gestures and commands → camera edits (marked dirty on the
-// session); when the worker's batch of passes is done, show it, apply the edits (re-upload, reset) and start
-// the next batch sized to the frame budget; build the panels, apply their actions, draw, present. Names and
-// saving are ExportController's, the closing line's numbers ViewerStats'.
+// The viewer's frame loop. Each frame: the window's gestures and commands → camera, view and object edits
+// (each an undo step through SceneEditor, marked dirty on the session); when the worker's batch of passes is
+// done, show it (and the selection's outline), apply the edits (re-upload, reset) and start the next batch
+// sized to the frame budget; build the menu bar and the side panel, apply their actions, draw the image in
+// its area beside the panel (ViewTransform), present. Files and their questions are SceneFiles', names and
+// image saves ExportController's, the closing line's numbers ViewerStats'.
 #include "viewer_app.h"
 
 #include <glad/gl.h>
@@ -16,11 +18,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <utility>
 
 #include "camera_controller.h"
 #include "display.h"
-#include "editor_dialogs.h"
 #include "export_controller.h"
 #include "image/image_writer.h"
 #include "panels.h"
@@ -29,7 +29,7 @@
 #include "render/strata_plan.h"
 #include "scene/scene_reader.h"
 #include "scene_editor.h"
-#include "scene_opener.h"
+#include "scene_files.h"
 #include "screen_layout.h"
 #include "view_transform.h"
 #include "viewer_session.h"
@@ -58,8 +58,9 @@ class ViewerApp {
 public:
     ViewerApp(const ViewerOptions& options, Window& window, ViewerSession& session, Clock::time_point start,
               float panelWidth)
-        : options_(options), window_(window), session_(session), scenePath_(options.scenePath),
-          exports_(options.scenePath, options.screenshot, state_), stats_(start), editor_(session, options.scenePath) {
+        : options_(options), window_(window), session_(session),
+          exports_(options.scenePath, options.screenshot, state_), stats_(start), editor_(session, options.scenePath),
+          files_(options.scenePath, !options.frames, session, editor_, exports_, state_, window) {
         state_.panelWidth = panelWidth;
         std::string device;
         cudaBuilt_ = cudaDeviceAvailable(device) || session.backend().name() == "cuda";
@@ -71,12 +72,6 @@ public:
         // stratum per pass, so its image is `--render --blocks 1 --spp N`.
         if (options.blocks) session_.setBlocks(*options.blocks, 0.0);
         else if (!options.frames) session_.setBlocks(StrataBlocks::ones(), kBatchSeconds);
-        if (!options.frames) {  // automation leaves the files alone
-            if (const auto found = RecoveryFile::find(scenePath_)) {
-                recoveryPath_ = *found;
-                askingRecovery_ = true;
-            }
-        }
     }
 
     // The frame loop of Dear ImGui's examples (poll, build the UI, apply its actions, render, present), with the
@@ -84,7 +79,7 @@ public:
     int run(Display& display) {
         int status = 0;
         auto lastFrame = Clock::now();
-        while (!closing()) {
+        while (options_.frames ? !window_.shouldClose() : !files_.closing()) {
             waitForEvents();
             const auto frameStart = Clock::now();
             const double dt = std::min(std::chrono::duration<double>(frameStart - lastFrame).count(), 0.1);
@@ -122,15 +117,6 @@ public:
     }
 
 private:
-    // The close button or Ctrl+Q: with unsaved edits, vetoed until the question is answered.
-    bool closing() {
-        if (!window_.shouldClose()) return false;
-        if (options_.frames || quitConfirmed_ || !editor_.unsaved()) return true;
-        window_.cancelClose();
-        ask(Pending::Quit);
-        return false;
-    }
-
     // The menu bar and the side panel (ImGui), then the image in the area beside them, then the UI over it.
     void drawFrame(Display& display) {
         ImGui_ImplOpenGL3_NewFrame();
@@ -146,7 +132,7 @@ private:
         editor_.commit(before, actions.label, actions.dirty, actions.gesture);
         if (actions.objects.selectionChanged) editor_.reportSelection();
         apply(actions);
-        drawDialogs();
+        markEdited(resized(files_.drawDialogs()));
         ImGui::Render();
         int fbw, fbh;
         window_.framebufferSize(fbw, fbh);
@@ -185,7 +171,7 @@ private:
     }
 
     void updateTitle() {
-        const std::string title = "trazo — " + std::filesystem::path(scenePath_).filename().string() +
+        const std::string title = "trazo — " + std::filesystem::path(files_.scenePath()).filename().string() +
                                   (editor_.unsaved() ? " *" : "");
         if (title == title_) return;
         title_ = title;
@@ -276,7 +262,7 @@ private:
         }
         if (e.moveEnded) markEdited(editor_.confirmMove());
         for (const ViewerCommand command : e.commands) markEdited(execute(command));
-        for (const std::string& path : e.drops) requestOpen(path);
+        for (const std::string& path : e.drops) files_.requestOpen(path);
         return flying;
     }
 
@@ -322,7 +308,7 @@ private:
                 editor_.cameraMoved(before, "Reset");
                 return kDirtyCamera;
             case ViewerCommand::Screenshot: screenshotPending_ = true; break;
-            case ViewerCommand::SaveScene: saveScene(); break;
+            case ViewerCommand::SaveScene: files_.save(); break;
             case ViewerCommand::Quit: window_.requestClose(); break;
             case ViewerCommand::Undo: return resized(editor_.undo());
             case ViewerCommand::Redo: return resized(editor_.redo());
@@ -369,7 +355,7 @@ private:
         if (a.newScreenshotName) exports_.renameScreenshot(state_);
         if (a.saveScene) execute(ViewerCommand::SaveScene);
         if (a.targetErrorChanged) session_.setTargetError(state_.targetErrorPercent / 100.0);
-        if (a.open) requestOpen(state_.openPath);
+        if (a.open) files_.requestOpen(state_.openPath);
         for (const ViewerCommand command : a.commands) markEdited(execute(command));
     }
 
@@ -379,83 +365,6 @@ private:
         lastEdit_ = Clock::now();
         session_.markDirty(dirty);
         editor_.invalidateOutline();
-    }
-
-    bool saveScene() {
-        if (!exports_.saveScene(session_.scene(), state_)) return false;
-        editor_.saved();
-        return true;
-    }
-
-    // Opening another scene, or quitting, with unsaved edits asks first (drawDialogs).
-    enum class Pending { None, Quit, Open };
-    void ask(Pending what, const std::string& path = "") {
-        pending_ = what;
-        pendingPath_ = path;
-        askingUnsaved_ = true;
-    }
-
-    void requestOpen(const std::string& path) {
-        if (editor_.unsaved()) ask(Pending::Open, path);
-        else openNow(path);
-    }
-
-    // Reads the scene as at start; on errors the messages go to the Open panel and stderr, the scene stays.
-    void openNow(const std::string& path) {
-        OpenedScene opened = openSceneFile(path);
-        for (const std::string& m : opened.messages) std::fprintf(stderr, "%s\n", m.c_str());
-        if (opened.scene) {
-            try {
-                if (editor_.moving()) editor_.cancelMove();
-                session_.replaceScene(std::move(*opened.scene));
-            } catch (const std::exception& e) {
-                opened.messages = {path + ": " + e.what()};
-                opened.scene.reset();
-            }
-        }
-        if (!opened.scene) {
-            std::fprintf(stderr, "trazo: cannot open %s; the current scene stays\n", path.c_str());
-            state_.openMessages = std::move(opened.messages);
-            return;
-        }
-        state_.openMessages.clear();
-        scenePath_ = path;
-        editor_.opened(path);
-        exports_ = ExportController(path, "", state_);
-        lastEdit_ = Clock::now();
-        std::fprintf(stderr, "trazo: opened %s\n", path.c_str());
-    }
-
-    void drawDialogs() {
-        switch (drawQuitDialog(askingUnsaved_, state_.scenePath)) {
-            case QuitAnswer::Save:
-                if (saveScene()) proceed();
-                break;
-            case QuitAnswer::Discard: proceed(); break;
-            case QuitAnswer::Cancel: pending_ = Pending::None; break;
-            case QuitAnswer::None: break;
-        }
-        switch (drawRecoveryDialog(askingRecovery_, recoveryPath_)) {
-            case RecoveryAnswer::Restore: {
-                DirtyFlags dirty = kDirtyNone;
-                if (editor_.restoreRecovery(state_.openMessages, dirty)) markEdited(resized(dirty));
-                break;
-            }
-            case RecoveryAnswer::Discard: editor_.discardRecovery(); break;
-            case RecoveryAnswer::Keep:
-            case RecoveryAnswer::None: break;
-        }
-    }
-
-    // What waited for the unsaved-edits question.
-    void proceed() {
-        const Pending what = std::exchange(pending_, Pending::None);
-        if (what == Pending::Quit) {
-            quitConfirmed_ = true;
-            window_.requestClose();
-        } else if (what == Pending::Open) {
-            openNow(pendingPath_);
-        }
     }
 
     BackendChoice runningBackend() const {
@@ -536,12 +445,13 @@ private:
     const ViewerOptions& options_;
     Window& window_;
     ViewerSession& session_;
-    std::string scenePath_, title_;
+    std::string title_;
     CameraController controller_;
     PanelState state_;
     ExportController exports_;
     ViewerStats stats_;
     SceneEditor editor_;
+    SceneFiles files_;
     bool cudaBuilt_ = false;
     bool screenshotPending_ = false;
     bool imageShown_ = false, fullImageShown_ = false;
@@ -552,9 +462,6 @@ private:
     ImageRect area_;
     float menuHeight_ = 0, framebufferScale_ = 1;
     std::vector<uint8_t> outline_;
-    bool askingUnsaved_ = false, askingRecovery_ = false, quitConfirmed_ = false;
-    Pending pending_ = Pending::None;
-    std::string pendingPath_, recoveryPath_;
 };
 
 // HiDPI: the font is made at the screen's content scale and drawn at 1 / (framebuffer pixels per window
