@@ -49,6 +49,7 @@ void drawConvergencePlot(const std::vector<std::pair<double, double>>& series, d
         last = p;
         first = false;
     }
+    if (!first) draw->AddCircleFilled(last, 2.5f, ImGui::GetColorU32(ImGuiCol_PlotLines));  // the latest estimate
     char label[64];
     std::snprintf(label, sizeof label, "1e%+.0f", hi);
     draw->AddText(ImVec2(p0.x + 2, p0.y), ImGui::GetColorU32(ImGuiCol_TextDisabled), label);

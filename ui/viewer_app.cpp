@@ -240,6 +240,8 @@ private:
     // frames must go on).
     bool applyInput(double dt) {
         const ImGuiIO& io = ImGui::GetIO();
+        window_.setImageArea(area_.x / framebufferScale_, area_.y / framebufferScale_, area_.width / framebufferScale_,
+                             area_.height / framebufferScale_);
         window_.setUiCapture(io.WantCaptureMouse, io.WantCaptureKeyboard);
         window_.setMoving(editor_.moving());
         const InputEvents e = window_.takeEvents();

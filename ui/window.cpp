@@ -158,6 +158,25 @@ void Window::setMoving(bool moving) { moving_ = moving; }
 void Window::setUiCapture(bool mouse, bool keyboard) {
     uiMouse_ = mouse;
     uiKeyboard_ = keyboard;
+    uiMouseInArea_ = inImageArea(cursorX_, cursorY_);
+}
+
+void Window::setImageArea(float x, float y, float width, float height) {
+    areaX_ = x;
+    areaY_ = y;
+    areaWidth_ = width;
+    areaHeight_ = height;
+}
+
+bool Window::inImageArea(double x, double y) const {
+    return x >= areaX_ && y >= areaY_ && x < areaX_ + areaWidth_ && y < areaY_ + areaHeight_;
+}
+
+// Outside the image's area the panel and the menu bar have the mouse. Inside, ImGui's word counts only when it
+// was said with the cursor inside too (a menu or a question over the image), not about the panel it just left.
+bool Window::uiHasMouse() const {
+    if (!inImageArea(cursorX_, cursorY_)) return true;
+    return uiMouse_ && uiMouseInArea_;
 }
 
 InputEvents Window::takeEvents() {
@@ -191,10 +210,11 @@ void Window::wake() { glfwPostEmptyEvent(); }
 
 void Window::onMouseButton(int button, int action, int mods) {
     activity_ = true;
+    glfwGetCursorPos(window_, &cursorX_, &cursorY_);
     if (moving_) {  // a move in progress: the buttons end it, nothing else starts
-        if (action == GLFW_PRESS && !uiMouse_ && button == GLFW_MOUSE_BUTTON_LEFT)
+        if (action == GLFW_PRESS && !uiHasMouse() && button == GLFW_MOUSE_BUTTON_LEFT)
             events_.commands.push_back(ViewerCommand::Confirm);
-        else if (action == GLFW_PRESS && !uiMouse_ && button == GLFW_MOUSE_BUTTON_RIGHT)
+        else if (action == GLFW_PRESS && !uiHasMouse() && button == GLFW_MOUSE_BUTTON_RIGHT)
             events_.commands.push_back(ViewerCommand::Cancel);
         else if (action == GLFW_RELEASE && button == dragButton_ && drag_ == Drag::Move)
             events_.moveEnded = true;
@@ -204,8 +224,7 @@ void Window::onMouseButton(int button, int action, int mods) {
         }
         return;
     }
-    if (action == GLFW_PRESS && drag_ == Drag::None && !uiMouse_) {
-        glfwGetCursorPos(window_, &cursorX_, &cursorY_);
+    if (action == GLFW_PRESS && drag_ == Drag::None && !uiHasMouse()) {
         pressX_ = cursorX_;
         pressY_ = cursorY_;
         const bool left = button == GLFW_MOUSE_BUTTON_LEFT;
@@ -252,7 +271,8 @@ void Window::onCursor(double x, double y) {
 
 void Window::onScroll(double dy) {
     activity_ = true;
-    if (uiMouse_) return;
+    glfwGetCursorPos(window_, &cursorX_, &cursorY_);
+    if (uiHasMouse()) return;
     if (!moving_ && (keyDown(GLFW_KEY_LEFT_CONTROL) || keyDown(GLFW_KEY_RIGHT_CONTROL))) {
         events_.zoom += float(dy);
         events_.zoomAt = cursor();

@@ -65,6 +65,9 @@ public:
     void cancelClose();  // vetoes the close button (the unsaved-changes question is asked first)
     // Whether ImGui wants the mouse and the keyboard this frame (gestures and keys are then left to it).
     void setUiCapture(bool mouse, bool keyboard);
+    // The image's area in window coordinates: the viewer's gestures start only there (a press or a wheel notch
+    // elsewhere is the panel's or the menu's, even when it comes in the same poll as the move that got there).
+    void setImageArea(float x, float y, float width, float height);
     // During a move the buttons end it (left confirms, right cancels) and the wheel changes its depth.
     void setMoving(bool moving);
     InputEvents takeEvents();
@@ -95,11 +98,15 @@ public:
 private:
     explicit Window(GLFWwindow* window);
     bool keyDown(int key) const;
+    bool inImageArea(double x, double y) const;
+    bool uiHasMouse() const;  // at the cursor now
 
     // Pending: a left press that is a click until it moves more than a few pixels, then an orbit.
     enum class Drag { None, Pending, Orbit, Pan, ViewPan, Move };
     GLFWwindow* window_;
     bool uiMouse_ = false, uiKeyboard_ = false, moving_ = false;
+    bool uiMouseInArea_ = false;  // where the cursor was when ImGui said it wanted the mouse
+    float areaX_ = 0, areaY_ = 0, areaWidth_ = 0, areaHeight_ = 0;
     Drag drag_ = Drag::None;
     int dragButton_ = -1;
     double cursorX_ = 0, cursorY_ = 0, pressX_ = 0, pressY_ = 0;
