@@ -4,7 +4,8 @@
 #      right of the side panel (nothing drawn over it);
 #  (a) a click on a known pixel selects the object the camera ray through it meets (two spheres, left and
 #      right, their image positions in closed form), and a click on the background clears the selection;
-#  (c) a G move then Ctrl+Z saves (Ctrl+S) a scene byte-identical to the one saved before the move;
+#  (c) a G move then Ctrl+Z, and an Alt+drag then Ctrl+Z, save (Ctrl+S) a scene byte-identical to the one
+#      saved before the move;
 #  (d) duplicate (Shift+D, Enter) saves a third sphere at the first's centre, delete (X) brings back the first
 #      save byte for byte, add (Shift+A) saves a sphere at the camera's POI; that file reopened (Ctrl+O, typed
 #      path) and saved again is byte-identical;
@@ -226,14 +227,27 @@ cmp -s "$work/save0.scene" "$work/moved.scene" && fail "the moved scene saved th
 key ctrl+z
 save "$work/undone.scene"
 cmp "$work/save0.scene" "$work/undone.scene" || fail "move then undo does not save the scene saved before the move"
-echo "ok: (c) move → Ctrl+Z saves a byte-identical scene"
+# The same with Alt+drag, which first selects the object under the cursor (the right sphere).
+xdotool mousemove --window "$wid" $((x0 + right)) $((y0 + 60)) sleep 0.2 keydown alt mousedown 1 sleep 0.2
+for step in $(seq 1 6); do
+    xdotool mousemove --window "$wid" $((x0 + right - 3 * step)) $((y0 + 60 + step))
+    sleep 0.05
+done
+from=$(lines)
+xdotool mouseup 1 keyup alt
+wait_log "^trazo: moved Sphere 1 \(two.scene:31\) by " "$((from + 1))" || fail "an Alt+drag did not move the right sphere"
+key ctrl+z
+save "$work/undone2.scene"
+cmp "$work/save0.scene" "$work/undone2.scene" || fail "Alt+drag then undo does not save the scene saved before"
+echo "ok: (c) move (G, and Alt+drag) → Ctrl+Z saves a byte-identical scene"
 
-# (d) Duplicate in place, delete, add; each saved and read back.
+# (d) Duplicate in place (the selection: the right sphere, since the Alt+drag), delete, add; each saved and read
+# back.
 key shift+d
 key Return
 save "$work/duplicated.scene"
 [ "$(grep -c '^Sphere' "$work/duplicated.scene")" -eq 3 ] || fail "Shift+D did not save a third sphere"
-[ "$(grep -c 'Center -2 0 0' "$work/duplicated.scene")" -eq 2 ] || fail "the copy is not at the original's centre"
+[ "$(grep -c 'Center 2 0 0' "$work/duplicated.scene")" -eq 2 ] || fail "the copy is not at the original's centre"
 key x
 save "$work/deleted.scene"
 cmp "$work/save0.scene" "$work/deleted.scene" || fail "deleting the copy does not save the scene as before"

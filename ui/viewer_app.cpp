@@ -257,7 +257,12 @@ private:
                                           session_.renderWidth(), session_.renderHeight()))
                 editor_.click(*p);
         }
-        if (e.moveStarted) editor_.beginMove(toImage(e.moveStart));
+        if (e.moveStarted) {  // Alt+drag takes the object under the cursor, then moves it
+            if (auto p = view_.imagePoint(e.moveStart.x * framebufferScale_, e.moveStart.y * framebufferScale_, area_,
+                                          session_.renderWidth(), session_.renderHeight()))
+                editor_.click(*p);
+            editor_.beginMove(toImage(e.moveStart));
+        }
         if (editor_.moving() && editor_.updateMove(toImage(window_.cursor()), e.scroll)) {
             stats_.moveInput(Clock::now());
             markEdited(kDirtyScene);
