@@ -104,7 +104,7 @@ public:
             if (!active && !imageChanged && settleFrames_ <= 0 && stats_.frames() > 0) continue;
             drawFrame(display);
             const auto shown = Clock::now();
-            stats_.frameShown(frameStart, shown, imageShown_, fullImageShown_, window_.dragging());
+            stats_.frameShown(frameStart, shown, imageShown_, fullImageShown_, window_.dragging() || editor_.moving());
             if (imageChanged) stats_.imageShown(shown);
             if (state_.sizeFollowsWindow) followAreaSize();
             if (!active && settleFrames_ > 0) --settleFrames_;
