@@ -208,7 +208,13 @@ wait_log "^trazo: selection cleared$" "$((from + 1))" || fail "a click on the ba
 from=$(lines)
 click_at $((x0 + left)) $((y0 + 60))
 wait_log "^trazo: selected Sphere 0 \(two.scene:24\)$" "$((from + 1))" || fail "a click on the left sphere did not select Sphere 0"
-echo "ok: (a) clicks select the sphere under the cursor (and the background clears)"
+from=$(lines)
+key Escape
+wait_log "^trazo: selection cleared$" "$((from + 1))" || fail "Escape did not clear the selection"
+from=$(lines)
+click_at $((x0 + left)) $((y0 + 60))
+wait_log "^trazo: selected Sphere 0 \(two.scene:24\)$" "$((from + 1))" || fail "a click on the left sphere did not select Sphere 0"
+echo "ok: (a) clicks select the sphere under the cursor (the background and Escape clear the selection)"
 
 # (c) A move by hand (G, the mouse, a left click), then Ctrl+Z: the saved scene is the one saved before.
 save "$work/save0.scene"
