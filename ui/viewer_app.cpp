@@ -24,6 +24,7 @@
 #include "export_controller.h"
 #include "image/image_writer.h"
 #include "panels.h"
+#include "render_info.h"
 #include "render/progressive_render.h"
 #include "render/render_start.h"
 #include "render/strata_plan.h"
@@ -126,7 +127,7 @@ private:
         PanelActions actions;
         menuHeight_ = drawMenuBar(menuInfo(), actions);
         beginSidePanel(state_, menuHeight_);
-        drawSidePanelSections(session_.scene(), state_, renderInfo(display), editor_.objects(),
+        drawSidePanelSections(session_.scene(), state_, describeRender(session_, display, cudaBuilt_), editor_.objects(),
                               session_.scene().camera.poi, actions);
         endSidePanel();
         editor_.commit(before, actions.label, actions.dirty, actions.gesture);
@@ -399,32 +400,6 @@ private:
         s.renderHeight = std::min(h, kMaxRenderSize);
         session_.setRenderSize(uint32_t(s.renderWidth), uint32_t(s.renderHeight));
         session_.markDirty(kDirtyCamera);
-    }
-
-    RenderInfo renderInfo(const Display& display) {
-        RenderInfo info;
-        info.backend = session_.backend().name();
-        info.device = session_.backend().deviceName();
-        info.displayPath = displayPathName(display.path());
-        if (!display.interopFailure().empty() && display.path() == DisplayPath::Host && info.backend == "cuda")
-            info.displayPath += " (interop: " + display.interopFailure() + ")";
-        info.cudaBuilt = cudaBuilt_;
-        info.width = session_.renderWidth();
-        info.height = session_.renderHeight();
-        if (session_.previewDivisor() > 1) info.displayPath += ", preview at 1/" + std::to_string(session_.previewDivisor());
-        info.passes = session_.passes();
-        info.cyclePasses = session_.cyclePasses();
-        info.samples = session_.samples();
-        info.blocks = describeBlocks(session_.blocks());
-        info.elapsedSeconds = session_.renderSeconds();
-        if (info.elapsedSeconds > 0) {
-            info.samplesPerSecond = info.samples * info.width * info.height / info.elapsedSeconds;
-            info.mraysPerSecond = double(session_.rays()) / info.elapsedSeconds * 1e-6;
-        }
-        for (const Diagnostic& d : session_.flattenWarnings().items) info.unsupported.push_back(formatDiagnostic(d));
-        for (const ConvergencePoint& p : session_.convergence()) info.convergence.emplace_back(p.seconds, p.relError);
-        info.targetReached = session_.targetReached();
-        return info;
     }
 
     int finishAutomation() {
