@@ -31,17 +31,6 @@ GLuint compileShader(GLenum kind, const char* source, std::string& error) {
 
 }  // namespace
 
-ImageRect fitImage(int framebufferWidth, int framebufferHeight, uint32_t imageWidth, uint32_t imageHeight) {
-    if (framebufferWidth <= 0 || framebufferHeight <= 0 || imageWidth == 0 || imageHeight == 0) return {};
-    const float scale = std::min(float(framebufferWidth) / float(imageWidth), float(framebufferHeight) / float(imageHeight));
-    ImageRect r;
-    r.width = std::floor(float(imageWidth) * scale);
-    r.height = std::floor(float(imageHeight) * scale);
-    r.x = std::floor(0.5f * (float(framebufferWidth) - r.width));
-    r.y = std::floor(0.5f * (float(framebufferHeight) - r.height));
-    return r;
-}
-
 const char* displayPathName(DisplayPath path) {
     switch (path) {
         case DisplayPath::Interop: return "CUDA-GL interop";
@@ -53,6 +42,7 @@ const char* displayPathName(DisplayPath path) {
 
 Display::~Display() {
     if (pbo_) glDeleteBuffers(1, &pbo_);
+    if (outline_) glDeleteTextures(1, &outline_);
     if (texture_) glDeleteTextures(1, &texture_);
     if (vao_) glDeleteVertexArrays(1, &vao_);
     if (program_) glDeleteProgram(program_);
@@ -81,6 +71,9 @@ bool Display::init(std::string& error) {
         return false;
     }
     uImageRect_ = glGetUniformLocation(program_, "imageRect");
+    uAreaRect_ = glGetUniformLocation(program_, "areaRect");
+    uOutline_ = glGetUniformLocation(program_, "outline");
+    uHasOutline_ = glGetUniformLocation(program_, "hasOutline");
     uExposure_ = glGetUniformLocation(program_, "exposureScale");
     uToneMode_ = glGetUniformLocation(program_, "toneMode");
     uOutside_ = glGetUniformLocation(program_, "outsideColor");
@@ -94,6 +87,10 @@ bool Display::init(std::string& error) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);  // enlarged pixels stay sharp
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glGenTextures(1, &outline_);
+    glBindTexture(GL_TEXTURE_2D, outline_);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTexture(GL_TEXTURE_2D, 0);
     if (!reportGlError("Display::init", __FILE__, __LINE__)) {
         error = "OpenGL refused the display's objects";
@@ -165,22 +162,43 @@ void Display::update(Backend& backend, uint32_t width, uint32_t height) {
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
 }
 
-void Display::draw(int framebufferWidth, int framebufferHeight, const ToneSettings& tone) const {
-    const ImageRect r = fitImage(framebufferWidth, framebufferHeight, width_, height_);
+void Display::setOutline(const std::vector<uint8_t>& mask, uint32_t width, uint32_t height) {
+    hasOutline_ = !mask.empty() && mask.size() == size_t(width) * height;
+    if (!hasOutline_) return;
+    glBindTexture(GL_TEXTURE_2D, outline_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    TRAZO_GL_CHECK(glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, GLsizei(width), GLsizei(height), 0, GL_RED, GL_UNSIGNED_BYTE,
+                                mask.data()));
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void Display::draw(int framebufferWidth, int framebufferHeight, const ImageRect& area, const ImageRect& rect,
+                   const ToneSettings& tone) const {
+    // The shader has gl_FragCoord from the bottom-left; the rectangles come from the top-left.
+    const auto flipped = [&](const ImageRect& r) { return float(framebufferHeight) - r.y - r.height; };
     glViewport(0, 0, framebufferWidth, framebufferHeight);
     glClearColor(kBackground[0], kBackground[1], kBackground[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     glUseProgram(program_);
-    glUniform4f(uImageRect_, r.x, r.y, std::max(r.width, 1.0f), std::max(r.height, 1.0f));
+    glUniform4f(uImageRect_, rect.x, flipped(rect), std::max(rect.width, 1.0f), std::max(rect.height, 1.0f));
+    glUniform4f(uAreaRect_, area.x, flipped(area), area.width, area.height);
     glUniform1f(uExposure_, std::exp2(tone.exposureStops));
     glUniform1i(uToneMode_, tone.mode);
     glUniform3f(uOutside_, kBackground[0], kBackground[1], kBackground[2]);
     glUniform1i(uEstimate_, 0);
+    glUniform1i(uOutline_, 1);
+    glUniform1i(uHasOutline_, hasOutline_ ? 1 : 0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, outline_);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, texture_);
     glBindVertexArray(vao_);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, 0);
     glUseProgram(0);
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "backends/backend.h"
+#include "view_transform.h"
 
 namespace trazo {
 
@@ -17,12 +18,6 @@ struct ToneSettings {
     int mode = 0;  // 0: the seed's clamp (what a PNG stores), 1: sRGB, 2: filmic
 };
 
-// Where the image sits in the framebuffer: x, y from the bottom-left, in pixels.
-struct ImageRect {
-    float x = 0, y = 0, width = 0, height = 0;
-};
-// The largest rectangle of the image's aspect ratio centred in the framebuffer.
-ImageRect fitImage(int framebufferWidth, int framebufferHeight, uint32_t imageWidth, uint32_t imageHeight);
 
 enum class DisplayPath { None, Interop, Host };
 const char* displayPathName(DisplayPath path);
@@ -39,8 +34,13 @@ public:
     // Brings the backend's current estimate to the screen texture (width × height = the accumulation's size;
     // a new size reallocates). Interop first, unless it failed for this backend before.
     void update(Backend& backend, uint32_t width, uint32_t height);
-    // Clears the framebuffer to the viewer's background (also the colour around the image), then draws the image.
-    void draw(int framebufferWidth, int framebufferHeight, const ToneSettings& tone) const;
+    // The selection's outline over the image: one byte per pixel (non-zero: outline), width × height of the
+    // image, row 0 = top; an empty mask shows none. Only the display sees it, never the accumulation.
+    void setOutline(const std::vector<uint8_t>& mask, uint32_t width, uint32_t height);
+    // Clears the framebuffer to the viewer's background (also the colour around the image), then draws the image
+    // into `rect` (framebuffer pixels from the top-left, ViewTransform::rect) clipped to `area`.
+    void draw(int framebufferWidth, int framebufferHeight, const ImageRect& area, const ImageRect& rect,
+              const ToneSettings& tone) const;
 
     DisplayPath path() const { return path_; }
     const std::string& interopFailure() const { return interopFailure_; }
@@ -51,8 +51,10 @@ private:
     void allocate(uint32_t width, uint32_t height);
     bool fillFromHost(Backend& backend);
 
-    unsigned program_ = 0, vao_ = 0, texture_ = 0, pbo_ = 0;
-    int uImageRect_ = -1, uExposure_ = -1, uToneMode_ = -1, uOutside_ = -1, uEstimate_ = -1;
+    unsigned program_ = 0, vao_ = 0, texture_ = 0, pbo_ = 0, outline_ = 0;
+    int uImageRect_ = -1, uAreaRect_ = -1, uExposure_ = -1, uToneMode_ = -1, uOutside_ = -1, uEstimate_ = -1;
+    int uOutline_ = -1, uHasOutline_ = -1;
+    bool hasOutline_ = false;
     uint32_t width_ = 0, height_ = 0;
     DisplayPath path_ = DisplayPath::None;
     const Backend* interopFailedFor_ = nullptr;

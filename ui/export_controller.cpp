@@ -64,11 +64,13 @@ void ExportController::saveScreenshot(ViewerSession& session, PanelState& state)
         showDefault(std::filesystem::path(path).extension().string(), state);
 }
 
-void ExportController::saveScene(const Scene& scene, PanelState& state) {
+bool ExportController::saveScene(const Scene& scene, PanelState& state) {
     std::string error;
     const std::string path = state.scenePath;
-    state.status = writeSceneFile(scene, path, error) ? "saved scene " + path : error;
+    const bool saved = writeSceneFile(scene, path, error);
+    state.status = saved ? "saved scene " + path : error;
     report(state.status);
+    return saved;
 }
 
 }  // namespace trazo

@@ -31,8 +31,9 @@ public:
     // Saves the image under the field's name; the status line (also on stderr) says how it went. A default
     // name is used once: the field then gets a fresh one (a typed name stays).
     void saveScreenshot(ViewerSession& session, PanelState& state);
-    // Writes the edited scene under the field's name; the status line as for saveScreenshot.
-    void saveScene(const Scene& scene, PanelState& state);
+    // Writes the edited scene under the field's name; the status line as for saveScreenshot. False when the
+    // write failed.
+    bool saveScene(const Scene& scene, PanelState& state);
 
 private:
     void showDefault(const std::string& extension, PanelState& state);

@@ -1,5 +1,5 @@
-// ImGui panels: the scene's parameters edited through the block tables' rows (widgetFor picks each widget
-// and its limits); each panel returns the DirtyFlags of what it changed.
+// ImGui panels: the scene's parameters edited through the block tables' rows (param_editor.h's editRows picks
+// each widget and its limits); each panel returns the DirtyFlags of what it changed.
 #include "panels.h"
 
 #include <imgui.h>
@@ -7,103 +7,26 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "param_widget.h"
+#include "convergence_plot.h"
+#include "param_editor.h"
 #include "scene/block_table.h"
 
 namespace trazo {
-namespace {
 
-// A combo over names with "(none)" first (index -1).
-bool comboIndex(const char* label, int32_t& index, const std::vector<std::string>& names, bool allowNone) {
-    const char* preview = index >= 0 && size_t(index) < names.size() ? names[size_t(index)].c_str() : "(none)";
-    bool changed = false;
-    if (ImGui::BeginCombo(label, preview)) {
-        if (allowNone && ImGui::Selectable("(none)", index < 0)) {
-            changed = index != -1;
-            index = -1;
-        }
-        for (size_t i = 0; i < names.size(); ++i) {
-            ImGui::PushID(int(i));
-            if (ImGui::Selectable(names[i].c_str(), index == int32_t(i))) {
-                changed = index != int32_t(i);
-                index = int32_t(i);
-            }
-            ImGui::PopID();
-        }
-        ImGui::EndCombo();
-    }
-    return changed;
+DirtyFlags drawSceneSettingsPanel(SceneSettings& s, Gestures& gestures) {
+    return editRows(sceneSettingsTable(), s, kDirtyScene, &gestures);
 }
 
-// The widget of one row (widgetFor) over its values; true when the edit changed them. `v` holds the edit.
-bool drawWidget(const ParamInfo& info, const ParamWidget& w, ParamValue& v) {
-    using Kind = ParamWidget::Kind;
-    const std::string label(info.name);
-    float f[4] = {v.real(0), v.real(1), v.real(2), v.real(3)};
-    int n[2] = {v.integer(0), v.integer(1)};
-    bool edited = false;
-    switch (w.kind) {
-        case Kind::None: return false;
-        case Kind::Color:
-            edited = ImGui::ColorEdit3(label.c_str(), f, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-            break;
-        case Kind::Vector: edited = ImGui::DragFloat3(label.c_str(), f, w.speed); break;
-        case Kind::Slider:
-            edited = ImGui::SliderFloat(label.c_str(), f, float(w.min), float(w.max), w.format);
-            break;
-        case Kind::Drag:
-            edited = ImGui::DragFloat(label.c_str(), f, w.speed, float(w.min), float(w.max), w.format);
-            break;
-        case Kind::Integer:
-            edited = info.count == 2 ? ImGui::InputInt2(label.c_str(), n) : ImGui::InputInt(label.c_str(), n);
-            if (w.commitOnExit) edited = ImGui::IsItemDeactivatedAfterEdit();
-            break;
-        case Kind::Choice: {
-            const int choices[] = {1, 4, 16};
-            int choice = n[0] == 16 ? 2 : n[0] == 4 ? 1 : 0;
-            edited = ImGui::Combo(label.c_str(), &choice, "1\0" "4\0" "16\0");
-            n[0] = choices[choice];
-            break;
-        }
-    }
-    if (!edited) return false;
-    for (int i = 0; i < info.count; ++i)
-        v.numbers[size_t(i)] = info.kind == ValueKind::Int ? double(n[i]) : double(f[i]);
-    return true;
-}
-
-// A widget for every number row of `table` (names, paths and transforms have none), kept inside the reader's
-// checks (fitToCheck); each change applied through the row and flagged as `flag` (a render size as size).
-template <class Target>
-DirtyFlags editRows(std::span<const ParamSpec<Target>> table, Target& target, DirtyFlags flag) {
-    DirtyFlags dirty = kDirtyNone;
-    for (const ParamSpec<Target>& row : table) {
-        const ParamWidget w = widgetFor(row.info);
-        std::vector<ParamValue> values;
-        row.extract(target, values);
-        if (w.kind == ParamWidget::Kind::None || values.size() != 1) continue;
-        ParamValue v = values[0];
-        if (!drawWidget(row.info, w, v) || !fitToCheck(row.info, v) || v.numbers == values[0].numbers) continue;
-        row.apply(target, v);
-        dirty |= w.commitOnExit ? kDirtySize : flag;
-    }
-    return dirty;
-}
-
-}  // namespace
-
-DirtyFlags drawSceneSettingsPanel(SceneSettings& s) { return editRows(sceneSettingsTable(), s, kDirtyScene); }
-
-DirtyFlags drawCameraPanel(Camera& camera, PanelActions& actions) {
-    const DirtyFlags dirty = editRows(cameraTable(), camera, kDirtyCamera);
-    if (ImGui::Button("Frame scene (F)")) actions.frameScene = true;
+DirtyFlags drawCameraPanel(Camera& camera, Gestures& gestures, PanelActions& actions) {
+    const DirtyFlags dirty = editRows(cameraTable(), camera, kDirtyCamera, &gestures);
+    if (ImGui::Button("Frame scene (F)")) actions.commands.push_back(ViewerCommand::FrameScene);
     ImGui::SameLine();
-    if (ImGui::Button("File camera (R)")) actions.resetCamera = true;
+    if (ImGui::Button("File camera (R)")) actions.commands.push_back(ViewerCommand::ResetCamera);
     ImGui::TextDisabled("Left drag orbit · middle/shift drag pan · wheel dolly · WASD/QE fly");
     return dirty;
 }
 
-DirtyFlags drawMaterialsPanel(Scene& scene, PanelState& state) {
+DirtyFlags drawMaterialsPanel(Scene& scene, PanelState& state, Gestures& gestures) {
     if (scene.materials.empty()) {
         ImGui::TextDisabled("The scene declares no materials.");
         return kDirtyNone;
@@ -113,35 +36,16 @@ DirtyFlags drawMaterialsPanel(Scene& scene, PanelState& state) {
     for (const Texture& t : scene.textures) textures.push_back(t.name);
     state.material = std::clamp(state.material, 0, int(names.size()) - 1);
     int32_t selected = state.material;
-    if (comboIndex("Material", selected, names, false)) state.material = selected;
+    if (comboIndex("Material", selected, names, nullptr)) state.material = selected;
     Material& m = scene.materials[size_t(state.material)];
     MaterialDraft draft{m, {}, {}};  // the reader's rows act on its draft
-    DirtyFlags dirty = editRows(materialTable(), draft, kDirtyScene);
+    DirtyFlags dirty = editRows(materialTable(), draft, kDirtyScene, &gestures);
     if (dirty) m = draft.material;
     for (const TextureSlot& slot : textureSlots()) {
-        if (comboIndex(std::string(slot.name).c_str(), m.*slot.index, textures, true)) dirty |= kDirtyScene;
+        const bool changed = comboIndex(std::string(slot.name).c_str(), m.*slot.index, textures, "(none)");
+        trackGesture(gestures, changed);
+        if (changed) dirty |= kDirtyScene;
     }
-    return dirty;
-}
-
-DirtyFlags drawLightsPanel(Scene& scene, PanelState& state) {
-    DirtyFlags dirty = kDirtyNone;
-    if (!scene.pointLights.empty()) {
-        ImGui::SliderInt("Point light", &state.pointLight, 0, int(scene.pointLights.size()) - 1);
-        state.pointLight = std::clamp(state.pointLight, 0, int(scene.pointLights.size()) - 1);
-        ImGui::PushID("point");
-        dirty |= editRows(pointLightTable(), scene.pointLights[size_t(state.pointLight)], kDirtyScene);
-        ImGui::PopID();
-    }
-    if (!scene.areaLights.empty()) {
-        if (!scene.pointLights.empty()) ImGui::Separator();
-        ImGui::SliderInt("Area light", &state.areaLight, 0, int(scene.areaLights.size()) - 1);
-        state.areaLight = std::clamp(state.areaLight, 0, int(scene.areaLights.size()) - 1);
-        ImGui::PushID("area");
-        dirty |= editRows(areaLightTable(), scene.areaLights[size_t(state.areaLight)], kDirtyScene);
-        ImGui::PopID();
-    }
-    if (scene.pointLights.empty() && scene.areaLights.empty()) ImGui::TextDisabled("The scene has no lights.");
     return dirty;
 }
 
@@ -165,8 +69,21 @@ void drawRenderPanel(PanelState& state, const RenderInfo& info, PanelActions& ac
         ImGui::Text("(%.0f to go)", std::max(0.0, state.targetPasses - info.samples));
     }
     ImGui::Text("%.3g samples/s  %.3g Mrays/s  %.1f s", info.samplesPerSecond, info.mraysPerSecond, info.elapsedSeconds);
+    if (info.convergence.empty()) {
+        ImGui::TextDisabled("Error estimate: after two passes");
+    } else {
+        ImGui::Text("Error estimate: %.3g %% (the two halves)%s", 100.0 * info.convergence.back().second,
+                    info.targetReached ? ", target reached" : "");
+        drawConvergencePlot(info.convergence, state.targetErrorPercent / 100.0);
+    }
     ImGui::InputInt("Stop after", &state.targetPasses, 1, int(std::max(info.cyclePasses, 1u)));
     state.targetPasses = std::max(state.targetPasses, 0);
+    ImGui::SameLine();
+    ImGui::TextDisabled("(0: never)");
+    if (ImGui::InputFloat("Stop at error %", &state.targetErrorPercent, 0.1f, 1.0f, "%.2f")) {
+        state.targetErrorPercent = std::clamp(state.targetErrorPercent, 0.0f, 100.0f);
+        actions.targetErrorChanged = true;
+    }
     ImGui::SameLine();
     ImGui::TextDisabled("(0: never)");
     if (ImGui::Button("Restart")) actions.restart = true;
@@ -198,24 +115,113 @@ void drawExportPanel(PanelState& state, PanelActions& actions) {
     if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
 }
 
-PanelActions drawPanels(Scene& scene, PanelState& state, const RenderInfo& info) {
-    PanelActions actions;
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(360, std::min(ImGui::GetIO().DisplaySize.y - 16.0f, 640.0f)), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.85f);
-    if (ImGui::Begin("Trazo")) {
-        ImGui::PushItemWidth(-150);
-        if (ImGui::CollapsingHeader("Scene settings")) actions.dirty |= drawSceneSettingsPanel(scene.settings);
-        if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
-            actions.dirty |= drawCameraPanel(scene.camera, actions);
-        if (ImGui::CollapsingHeader("Materials")) actions.dirty |= drawMaterialsPanel(scene, state);
-        if (ImGui::CollapsingHeader("Lights")) actions.dirty |= drawLightsPanel(scene, state);
-        if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(state, info, actions);
-        if (ImGui::CollapsingHeader("Export", ImGuiTreeNodeFlags_DefaultOpen)) drawExportPanel(state, actions);
-        ImGui::PopItemWidth();
+void drawOpenPanel(PanelState& state, PanelActions& actions) {
+    if (state.focusOpenPath) ImGui::SetKeyboardFocusHere();
+    state.focusOpenPath = false;
+    // Focused (a click, Ctrl+O), the whole path is selected: typing replaces it.
+    if (ImGui::InputText("Path", state.openPath, sizeof state.openPath,
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll))
+        actions.open = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Open")) actions.open = true;
+    ImGui::TextDisabled("or drop a .scene file onto the window");
+    if (state.openMessages.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    for (const std::string& m : state.openMessages) ImGui::TextWrapped("%s", m.c_str());
+    ImGui::PopStyleColor();
+    if (ImGui::SmallButton("Dismiss")) state.openMessages.clear();
+}
+
+float drawMenuBar(const MenuInfo& info, PanelActions& actions) {
+    if (!ImGui::BeginMainMenuBar()) return 0.0f;
+    const auto item = [&](const char* label, const char* keys, ViewerCommand command, bool enabled = true,
+                          bool checked = false) {
+        if (ImGui::MenuItem(label, keys, checked, enabled)) actions.commands.push_back(command);
+    };
+    if (ImGui::BeginMenu("File")) {
+        item("Open...", "Ctrl+O", ViewerCommand::OpenPrompt);
+        item("Save scene", "Ctrl+S", ViewerCommand::SaveScene);
+        item("Save image", "P", ViewerCommand::Screenshot);
+        ImGui::Separator();
+        item("Quit", "Ctrl+Q", ViewerCommand::Quit);
+        ImGui::EndMenu();
     }
+    if (ImGui::BeginMenu("Edit")) {
+        item(info.canUndo ? ("Undo " + info.undoLabel).c_str() : "Undo", "Ctrl+Z", ViewerCommand::Undo, info.canUndo);
+        item(info.canRedo ? ("Redo " + info.redoLabel).c_str() : "Redo", "Ctrl+Shift+Z", ViewerCommand::Redo,
+             info.canRedo);
+        ImGui::Separator();
+        item("Add sphere", "Shift+A", ViewerCommand::AddSphere);
+        item("Move selection", "G", ViewerCommand::Grab, info.hasSelection);
+        item("Duplicate", "Shift+D", ViewerCommand::Duplicate, info.hasSelection);
+        item("Delete", "X / Delete", ViewerCommand::Delete, info.hasSelection);
+        item("Clear selection", "Escape", ViewerCommand::Cancel, info.hasSelection);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        item("Fit", "0", ViewerCommand::FitView, true, info.fitted);
+        item("Actual pixels (1:1)", "1", ViewerCommand::ActualPixels);
+        item("Zoom in", "+ / Ctrl+wheel", ViewerCommand::ZoomIn);
+        item("Zoom out", "-", ViewerCommand::ZoomOut);
+        ImGui::Separator();
+        item("Frame scene", "F", ViewerCommand::FrameScene);
+        item("File camera", "R", ViewerCommand::ResetCamera);
+        ImGui::EndMenu();
+    }
+    const float height = ImGui::GetWindowSize().y;
+    ImGui::EndMainMenuBar();
+    return height;
+}
+
+void beginSidePanel(PanelState& state, float top) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const float height = std::max(io.DisplaySize.y - top, 1.0f);
+    const float scale = ImGui::GetFontSize() / 13.0f;  // the content scale the font was made for
+    const float most = std::max(kMinPanelWidth * scale, io.DisplaySize.x * kMaxPanelShare);
+    ImGui::SetNextWindowPos(ImVec2(0, top), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(state.panelWidth, height), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(kMinPanelWidth * scale, height), ImVec2(most, height));
+    ImGui::Begin("Trazo", nullptr, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                                       ImGuiWindowFlags_NoBringToFrontOnFocus);
+    // The edge drag resizes the window this frame: keep its width for the next (and for the image's area).
+    state.panelWidth = ImGui::GetWindowWidth();
+    ImGui::PushItemWidth(-150 * scale);
+}
+
+void drawSidePanelSections(Scene& scene, PanelState& state, const RenderInfo& info, ObjectsPanelState& objects,
+                           Vec3 viewCentre, PanelActions& actions) {
+    // A failed open shows why; Ctrl+O opens the section with its path field focused.
+    if (!state.openMessages.empty() || state.focusOpenPath) ImGui::SetNextItemOpen(true);
+    if (ImGui::CollapsingHeader("Open scene")) drawOpenPanel(state, actions);
+    // The Objects panel starts the frame's gestures (startGestures): it comes before the other editors.
+    if (objects.scrollToSelection) ImGui::SetNextItemOpen(true);
+    if (ImGui::CollapsingHeader("Objects", ImGuiTreeNodeFlags_DefaultOpen)) {
+        actions.dirty |= drawObjectsPanel(scene, objects, actions.objects, viewCentre);
+    } else {
+        startGestures(objects.gestures);
+    }
+    if (actions.dirty) actions.label = actions.objects.label;
+    const auto edited = [&](DirtyFlags dirty, const std::string& label) {
+        if (!dirty) return;
+        actions.dirty |= dirty;
+        actions.label = label;
+    };
+    if (ImGui::CollapsingHeader("Scene settings"))
+        edited(drawSceneSettingsPanel(scene.settings, objects.gestures), "Edit scene settings");
+    if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
+        edited(drawCameraPanel(scene.camera, objects.gestures, actions), "Edit camera");
+    if (ImGui::CollapsingHeader("Materials")) {
+        const DirtyFlags dirty = drawMaterialsPanel(scene, state, objects.gestures);
+        if (dirty) edited(dirty, "Edit material " + scene.materials[size_t(state.material)].name);
+    }
+    actions.gesture = objects.gestures.edited;
+    if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) drawRenderPanel(state, info, actions);
+    if (ImGui::CollapsingHeader("Export", ImGuiTreeNodeFlags_DefaultOpen)) drawExportPanel(state, actions);
+}
+
+void endSidePanel() {
+    ImGui::PopItemWidth();
     ImGui::End();
-    return actions;
 }
 
 }  // namespace trazo

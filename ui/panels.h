@@ -8,7 +8,10 @@
 
 #include "dirty_flags.h"
 #include "display.h"
+#include "objects_panel.h"
 #include "scene/scene.h"
+#include "screen_layout.h"
+#include "viewer_command.h"
 
 namespace trazo {
 
@@ -22,35 +25,63 @@ struct RenderInfo {
     std::string blocks;  // the current segment's (describeBlocks)
     double elapsedSeconds = 0, samplesPerSecond = 0, mraysPerSecond = 0;
     std::vector<std::string> unsupported;  // flatten's warnings (what is read but not drawn), formatted
+    // The estimated relative error (RMS over the image, from the two halves' difference) against render time
+    // since the last reset; empty before there is one.
+    std::vector<std::pair<double, double>> convergence;
+    bool targetReached = false;
+};
+
+// What the menu bar shows enabled or checked.
+struct MenuInfo {
+    bool canUndo = false, canRedo = false, hasSelection = false, fitted = true;
+    std::string undoLabel, redoLabel;  // "Move Sphere 2", shown after Undo / Redo
 };
 
 struct PanelState {
     int material = 0;  // selected in the Materials panel
-    int pointLight = 0, areaLight = 0;
     ToneSettings tone;
     BackendChoice backend = BackendChoice::Cpu;  // the Render panel's choice: Cpu or Cuda
     int targetPasses = 0;      // stop after this many one-stratum passes' worth of samples; 0 = keep going
-    bool sizeFollowsWindow = false;
+    bool sizeFollowsWindow = false;  // the image area's size
+    float targetErrorPercent = 0;    // stop when the estimated relative error is below it; 0 = keep going
+    float panelWidth = kPanelWidth;  // window coordinates; its right edge drags it
+    char openPath[1024] = {};
+    bool focusOpenPath = false;  // the path field takes the keyboard next frame (Ctrl+O)
+    std::vector<std::string> openMessages;  // why the last open failed (file:line: error: ...)
     char screenshotPath[1024] = {};
     char scenePath[1024] = {};
     std::string status;  // last export message
 };
 
 struct PanelActions {
-    DirtyFlags dirty = kDirtyNone;
-    bool frameScene = false, resetCamera = false, restart = false;
+    DirtyFlags dirty = kDirtyNone;  // what the scene's editors changed: one undo step named `label`
+    std::string label;
+    uint64_t gesture = 0;  // non-zero while a widget is held (param_editor.h's Gestures)
+    ObjectsPanelActions objects;
+    bool restart = false;
     bool switchBackend = false;  // to PanelState::backend
     bool screenshot = false, newScreenshotName = false, saveScene = false;
+    bool targetErrorChanged = false;
+    bool open = false;  // the scene at PanelState::openPath
+    std::vector<ViewerCommand> commands;  // from the menu bar and the buttons
 };
 
-// The whole side panel: Scene settings, Camera, Materials, Lights, Render, Export.
-PanelActions drawPanels(Scene& scene, PanelState& state, const RenderInfo& info);
+// The menu bar (File, Edit, View) across the top; returns its height (window coordinates).
+float drawMenuBar(const MenuInfo& info, PanelActions& actions);
+// The side panel at the window's left edge below the menu bar (`top`), the whole height, never over the image;
+// its width (PanelState::panelWidth) follows a drag of its right edge. Between begin and end, the sections:
+// Open, Objects (objects_panel.h; new objects go to `viewCentre`; the lights are there), Scene settings,
+// Camera, Materials, Render, Export. The editors share the Objects panel's gesture ids.
+void beginSidePanel(PanelState& state, float top);
+void drawSidePanelSections(Scene& scene, PanelState& state, const RenderInfo& info, ObjectsPanelState& objects,
+                           Vec3 viewCentre, PanelActions& actions);
+void endSidePanel();
 
-DirtyFlags drawSceneSettingsPanel(SceneSettings& settings);
-DirtyFlags drawCameraPanel(Camera& camera, PanelActions& actions);
-DirtyFlags drawMaterialsPanel(Scene& scene, PanelState& state);
-DirtyFlags drawLightsPanel(Scene& scene, PanelState& state);
+DirtyFlags drawSceneSettingsPanel(SceneSettings& settings, Gestures& gestures);
+DirtyFlags drawCameraPanel(Camera& camera, Gestures& gestures, PanelActions& actions);
+DirtyFlags drawMaterialsPanel(Scene& scene, PanelState& state, Gestures& gestures);
 void drawRenderPanel(PanelState& state, const RenderInfo& info, PanelActions& actions);
 void drawExportPanel(PanelState& state, PanelActions& actions);
+void drawOpenPanel(PanelState& state, PanelActions& actions);
 
 }  // namespace trazo

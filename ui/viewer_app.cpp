@@ -1,7 +1,9 @@
-// The viewer's frame loop. Each frame: the window's gestures and commands → camera edits (marked dirty on the
-// session); when the worker's batch of passes is done, show it, apply the edits (re-upload, reset) and start
-// the next batch sized to the frame budget; build the panels, apply their actions, draw, present. Names and
-// saving are ExportController's, the closing line's numbers ViewerStats'.
+// The viewer's frame loop. Each frame: the window's gestures and commands → camera, view and object edits
+// (each an undo step through SceneEditor, marked dirty on the session); when the worker's batch of passes is
+// done, show it (and the selection's outline), apply the edits (re-upload, reset) and start the next batch
+// sized to the frame budget; build the menu bar and the side panel, apply their actions, draw the image in
+// its area beside the panel (ViewTransform), present. Files and their questions are SceneFiles', names and
+// image saves ExportController's, the closing line's numbers ViewerStats'.
 #include "viewer_app.h"
 
 #include <glad/gl.h>
@@ -22,10 +24,15 @@
 #include "export_controller.h"
 #include "image/image_writer.h"
 #include "panels.h"
+#include "render_info.h"
 #include "render/progressive_render.h"
 #include "render/render_start.h"
 #include "render/strata_plan.h"
 #include "scene/scene_reader.h"
+#include "scene_editor.h"
+#include "scene_files.h"
+#include "screen_layout.h"
+#include "view_transform.h"
 #include "viewer_session.h"
 #include "viewer_stats.h"
 #include "window.h"
@@ -44,23 +51,18 @@ constexpr uint32_t kDefaultTargetPasses = 1024;
 // seconds after the last edit. Screenshots and --frames always use the full size.
 constexpr double kPreviewPassSeconds = 1.0 / 20.0;
 constexpr double kPreviewHoldSeconds = 0.25;
+constexpr float kZoomStep = 1.25f;  // per wheel notch or +/- press
 
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// The window's starting size: the image's, kept on a usual screen and at least 640×480 (the panel needs room;
-// a small image is shown enlarged).
-void initialWindowSize(uint32_t width, uint32_t height, int& w, int& h) {
-    const double scale = std::clamp(std::min(640.0 / width, 480.0 / height), 1.0, 8.0);
-    const double shrink = std::min({1.0, 1600.0 / (width * scale), 1000.0 / (height * scale)});
-    w = std::max(int(width * scale * shrink), 320);
-    h = std::max(int(height * scale * shrink), 240);
-}
-
 class ViewerApp {
 public:
-    ViewerApp(const ViewerOptions& options, Window& window, ViewerSession& session, Clock::time_point start)
+    ViewerApp(const ViewerOptions& options, Window& window, ViewerSession& session, Clock::time_point start,
+              float panelWidth)
         : options_(options), window_(window), session_(session),
-          exports_(options.scenePath, options.screenshot, state_), stats_(start) {
+          exports_(options.scenePath, options.screenshot, state_), stats_(start), editor_(session, options.scenePath),
+          files_(options.scenePath, !options.frames, session, editor_, exports_, state_, window) {
+        state_.panelWidth = panelWidth;
         std::string device;
         cudaBuilt_ = cudaDeviceAvailable(device) || session.backend().name() == "cuda";
         state_.backend = runningBackend();
@@ -78,7 +80,7 @@ public:
     int run(Display& display) {
         int status = 0;
         auto lastFrame = Clock::now();
-        while (!window_.shouldClose()) {
+        while (options_.frames ? !window_.shouldClose() : !files_.closing()) {
             waitForEvents();
             const auto frameStart = Clock::now();
             const double dt = std::min(std::chrono::duration<double>(frameStart - lastFrame).count(), 0.1);
@@ -93,32 +95,94 @@ public:
                     status = finishAutomation();
                     break;
                 }
+                if (editor_.refreshOutline(outline_)) {
+                    display.setOutline(outline_, session_.renderWidth(), session_.renderHeight());
+                    settleFrames_ = std::max(settleFrames_, 1);
+                }
                 startNextBatch();
             }
             // Redraw only when something changed: an idle window leaves the cores to the renderer.
             if (!active && !imageChanged && settleFrames_ <= 0 && stats_.frames() > 0) continue;
-            int fbw, fbh;
-            window_.framebufferSize(fbw, fbh);
-            ImGui_ImplOpenGL3_NewFrame();
-            ImGui_ImplGlfw_NewFrame();
-            ImGui::NewFrame();
-            apply(drawPanels(session_.scene(), state_, renderInfo(display)));
-            ImGui::Render();
-            display.draw(fbw, fbh, state_.tone);
-            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-            window_.swapBuffers();
-            stats_.frameShown(frameStart, Clock::now(), imageShown_, fullImageShown_, window_.dragging());
-            if (state_.sizeFollowsWindow) followWindowSize(fbw, fbh);
+            drawFrame(display);
+            const auto shown = Clock::now();
+            stats_.frameShown(frameStart, shown, imageShown_, fullImageShown_, window_.dragging() || editor_.moving());
+            if (imageChanged) stats_.imageShown(shown);
+            if (state_.sizeFollowsWindow) followAreaSize();
             if (!active && settleFrames_ > 0) --settleFrames_;
+            editor_.tick();
+            updateTitle();
         }
+        if (!options_.frames) editor_.quitting();
         printStats(display);
         return status;
     }
 
 private:
+    // The menu bar and the side panel (ImGui), then the image in the area beside them, then the UI over it.
+    void drawFrame(Display& display) {
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        const Scene before = session_.scene();  // for the undo step of what the panels change
+        PanelActions actions;
+        menuHeight_ = drawMenuBar(menuInfo(), actions);
+        beginSidePanel(state_, menuHeight_);
+        drawSidePanelSections(session_.scene(), state_, describeRender(session_, display, cudaBuilt_), editor_.objects(),
+                              session_.scene().camera.poi, actions);
+        endSidePanel();
+        editor_.commit(before, actions.label, actions.dirty, actions.gesture);
+        if (actions.objects.selectionChanged) editor_.reportSelection();
+        apply(actions);
+        markEdited(resized(files_.drawDialogs()));
+        ImGui::Render();
+        int fbw, fbh;
+        window_.framebufferSize(fbw, fbh);
+        updateArea();
+        display.draw(fbw, fbh, area_, imageRect(), state_.tone);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        window_.swapBuffers();
+    }
+
+    // The image's area beside the panel, in framebuffer pixels (as the panel's width stands this frame).
+    void updateArea() {
+        int w, h, fbw, fbh;
+        window_.windowSize(w, h);
+        window_.framebufferSize(fbw, fbh);
+        area_ = imageArea(w, h, fbw, fbh, state_.panelWidth, menuHeight_);
+        framebufferScale_ = w > 0 ? float(fbw) / float(w) : 1.0f;
+    }
+    // Where the full-size image is shown (a preview's smaller accumulation is stretched over the same place).
+    ImageRect imageRect() const { return view_.rect(area_, session_.renderWidth(), session_.renderHeight()); }
+    // A window point in the full-size image's pixels (beyond its edges too: a move's cursor).
+    ImagePoint toImage(CursorPoint c) const {
+        return view_.toImage(c.x * framebufferScale_, c.y * framebufferScale_, area_, session_.renderWidth(),
+                             session_.renderHeight());
+    }
+
+    MenuInfo menuInfo() const {
+        MenuInfo info;
+        const EditHistory& h = editor_.history();
+        info.canUndo = h.canUndo();
+        info.canRedo = h.canRedo();
+        info.undoLabel = h.undoLabel();
+        info.redoLabel = h.redoLabel();
+        info.hasSelection = editor_.selection().has_value();
+        info.fitted = view_.fitted();
+        return info;
+    }
+
+    void updateTitle() {
+        const std::string title = "trazo — " + std::filesystem::path(files_.scenePath()).filename().string() +
+                                  (editor_.unsaved() ? " *" : "");
+        if (title == title_) return;
+        title_ = title;
+        window_.setTitle(title);
+    }
+
     // Woken early by input or by the batch's end (Window::wake); ImGui gets a few frames to settle.
     void waitForEvents() {
-        const bool finished = state_.targetPasses > 0 && session_.samples() >= double(state_.targetPasses) &&
+        const bool finished = ((state_.targetPasses > 0 && session_.samples() >= double(state_.targetPasses)) ||
+                               session_.targetReached()) &&
                               session_.dirty() == kDirtyNone && !screenshotPending_;
         if (session_.busy() || (finished && session_.generation() == shownGeneration_)) {
             window_.waitEvents(settleFrames_ > 0 ? 1.0 / 60.0 : 0.5);
@@ -148,7 +212,7 @@ private:
         if (!options_.frames) choosePreview();
         const uint32_t target = state_.targetPasses > 0 ? uint32_t(state_.targetPasses) : kMaxProgressivePasses;
         if (session_.dirty() != kDirtyNone) session_.applyEdits();
-        if (session_.samples() < double(target)) {
+        if (session_.samples() < double(target) && !session_.targetReached()) {
             // The target counts one-stratum passes; a pass of a grown segment stands for several.
             const double left = (double(target) - session_.samples()) / session_.blocksWeight();
             const double budget = session_.passesForBudget(kBatchSeconds);
@@ -177,71 +241,138 @@ private:
     // frames must go on).
     bool applyInput(double dt) {
         const ImGuiIO& io = ImGui::GetIO();
+        window_.setImageArea(area_.x / framebufferScale_, area_.y / framebufferScale_, area_.width / framebufferScale_,
+                             area_.height / framebufferScale_);
         window_.setUiCapture(io.WantCaptureMouse, io.WantCaptureKeyboard);
+        window_.setMoving(editor_.moving());
         const InputEvents e = window_.takeEvents();
+        const bool flying = navigate(e, dt);
+        if (e.viewPanX != 0 || e.viewPanY != 0)
+            view_.panBy(e.viewPanX * framebufferScale_, e.viewPanY * framebufferScale_, area_, session_.renderWidth(),
+                        session_.renderHeight());
+        if (e.zoom != 0)
+            view_.zoomBy(std::pow(kZoomStep, e.zoom), e.zoomAt.x * framebufferScale_, e.zoomAt.y * framebufferScale_,
+                         area_, session_.renderWidth(), session_.renderHeight());
+        for (const CursorPoint& c : e.clicks) {
+            if (auto p = view_.imagePoint(c.x * framebufferScale_, c.y * framebufferScale_, area_,
+                                          session_.renderWidth(), session_.renderHeight()))
+                editor_.click(*p);
+        }
+        if (e.moveStarted) {  // Alt+drag takes the object under the cursor, then moves it
+            if (auto p = view_.imagePoint(e.moveStart.x * framebufferScale_, e.moveStart.y * framebufferScale_, area_,
+                                          session_.renderWidth(), session_.renderHeight()))
+                editor_.click(*p);
+            editor_.beginMove(toImage(e.moveStart));
+        }
+        if (editor_.moving() && editor_.updateMove(toImage(window_.cursor()), e.scroll)) {
+            stats_.moveInput(Clock::now());
+            markEdited(kDirtyScene);
+        }
+        if (e.moveEnded) markEdited(editor_.confirmMove());
+        for (const ViewerCommand command : e.commands) markEdited(execute(command));
+        for (const std::string& path : e.drops) files_.requestOpen(path);
+        return flying;
+    }
+
+    // The camera's navigation: orbit, pan, dolly (the wheel, unless a move takes it), fly; each an edit.
+    bool navigate(const InputEvents& e, double dt) {
         Camera& camera = session_.scene().camera;
-        DirtyFlags dirty = kDirtyNone;
+        const auto moved = [&](const Camera& before, const char* kind) {
+            editor_.cameraMoved(before, kind);
+            markEdited(kDirtyCamera);
+        };
+        const Camera before = camera;
         if (e.orbitX != 0 || e.orbitY != 0) {
             controller_.orbit(camera, e.orbitX, e.orbitY);
-            dirty |= kDirtyCamera;
+            moved(before, "Orbit");
         }
-        if (e.panX != 0 || e.panY != 0) {
-            int fbw, fbh;
-            window_.framebufferSize(fbw, fbh);
-            controller_.pan(camera, e.panX, e.panY,
-                            fitImage(fbw, fbh, session_.renderWidth(), session_.renderHeight()).height);
-            dirty |= kDirtyCamera;
+        if (e.panX != 0 || e.panY != 0) {  // the drag in framebuffer pixels against the image's height on screen
+            controller_.pan(camera, e.panX * framebufferScale_, e.panY * framebufferScale_, imageRect().height);
+            moved(before, "Pan");
         }
-        if (e.scroll != 0) {
+        if (e.scroll != 0 && !editor_.moving()) {
             controller_.dolly(camera, e.scroll);
-            dirty |= kDirtyCamera;
+            moved(before, "Dolly");
         }
-        for (const ViewerCommand command : e.commands) dirty |= execute(command);
         const FlyKeys fly = window_.flyKeys();
         if (fly.moving()) {
             controller_.fly(camera, fly.forward, fly.right, fly.up, float(dt));
-            dirty |= kDirtyCamera;
+            moved(before, "Fly");
         }
-        markEdited(dirty);
         return fly.moving();
     }
 
-    // One command, from a key or a panel button; what of the scene it changed.
+    // One command, from a key, the menu or a panel button; what of the scene it changed.
     DirtyFlags execute(ViewerCommand command) {
         Camera& camera = session_.scene().camera;
+        const Camera before = camera;
         switch (command) {
             case ViewerCommand::FrameScene:
                 controller_.frame(camera, sceneBounds(session_.arrays()));
+                editor_.cameraMoved(before, "Frame");
                 return kDirtyCamera;
             case ViewerCommand::ResetCamera:
                 controller_.reset(camera, session_.fileScene().camera);
+                editor_.cameraMoved(before, "Reset");
                 return kDirtyCamera;
             case ViewerCommand::Screenshot: screenshotPending_ = true; break;
-            case ViewerCommand::SaveScene: exports_.saveScene(session_.scene(), state_); break;
+            case ViewerCommand::SaveScene: files_.save(); break;
             case ViewerCommand::Quit: window_.requestClose(); break;
+            case ViewerCommand::Undo: return resized(editor_.undo());
+            case ViewerCommand::Redo: return resized(editor_.redo());
+            case ViewerCommand::FitView: view_.fit(); break;
+            case ViewerCommand::ActualPixels: view_.actualPixels(); break;
+            case ViewerCommand::ZoomIn:
+            case ViewerCommand::ZoomOut:
+                view_.zoomBy(command == ViewerCommand::ZoomIn ? kZoomStep : 1.0f / kZoomStep,
+                             area_.x + 0.5f * area_.width, area_.y + 0.5f * area_.height, area_,
+                             session_.renderWidth(), session_.renderHeight());
+                break;
+            case ViewerCommand::Grab: editor_.beginMove(toImage(window_.cursor())); break;
+            case ViewerCommand::Confirm: return editor_.confirmMove() & ~kDirtyScene;  // the moves marked it
+            case ViewerCommand::Cancel:
+                if (editor_.moving()) return editor_.cancelMove();
+                editor_.clearSelection();
+                break;
+            case ViewerCommand::Delete: return editor_.deleteSelected();
+            case ViewerCommand::Duplicate: {
+                const DirtyFlags dirty = editor_.duplicateSelected();
+                if (dirty) editor_.beginMove(toImage(window_.cursor()));  // the copy follows the mouse, as G
+                return dirty;
+            }
+            case ViewerCommand::AddSphere: return editor_.addSphere(camera.poi);
+            case ViewerCommand::OpenPrompt: state_.focusOpenPath = true; break;
         }
         return kDirtyNone;
     }
 
-    void apply(const PanelActions& a) {
-        DirtyFlags dirty = a.dirty;
-        if (a.frameScene) dirty |= execute(ViewerCommand::FrameScene);
-        if (a.resetCamera) dirty |= execute(ViewerCommand::ResetCamera);
-        if (a.restart) dirty |= kDirtyCamera;
+    // Edits that change the render size reallocate (an undo of a Scene settings edit, say).
+    DirtyFlags resized(DirtyFlags dirty) {
         if (dirty & kDirtySize)
             session_.setRenderSize(uint32_t(session_.scene().settings.renderWidth),
                                    uint32_t(session_.scene().settings.renderHeight));
+        return dirty;
+    }
+
+    void apply(const PanelActions& a) {
+        DirtyFlags dirty = resized(a.dirty);
+        if (a.restart) dirty |= kDirtyCamera;
         markEdited(dirty);
         if (a.switchBackend) switchBackend(state_.backend);
         if (a.screenshot) execute(ViewerCommand::Screenshot);
         if (a.newScreenshotName) exports_.renameScreenshot(state_);
         if (a.saveScene) execute(ViewerCommand::SaveScene);
+        if (a.targetErrorChanged) session_.setTargetError(state_.targetErrorPercent / 100.0);
+        if (a.open) files_.requestOpen(state_.openPath);
+        for (const ViewerCommand command : a.commands) markEdited(execute(command));
     }
 
-    // Edits restart the image, at preview size for kPreviewHoldSeconds.
+    // Edits restart the image, at preview size for kPreviewHoldSeconds; the outline waits for the new image.
     void markEdited(DirtyFlags dirty) {
-        if (dirty) lastEdit_ = Clock::now();
+        if (!dirty) return;
+        lastEdit_ = Clock::now();
         session_.markDirty(dirty);
+        editor_.invalidateOutline();
     }
 
     BackendChoice runningBackend() const {
@@ -260,38 +391,15 @@ private:
         }
     }
 
-    // Render at the window's size: the accumulation (and the display) are reallocated when it changes.
-    void followWindowSize(int fbw, int fbh) {
+    // Render at the image area's size: the accumulation (and the display) are reallocated when it changes.
+    void followAreaSize() {
         SceneSettings& s = session_.scene().settings;
-        if (fbw <= 0 || fbh <= 0 || (s.renderWidth == fbw && s.renderHeight == fbh)) return;
-        s.renderWidth = std::min(fbw, kMaxRenderSize);
-        s.renderHeight = std::min(fbh, kMaxRenderSize);
+        const int w = int(area_.width), h = int(area_.height);
+        if (w <= 0 || h <= 0 || (s.renderWidth == w && s.renderHeight == h)) return;
+        s.renderWidth = std::min(w, kMaxRenderSize);
+        s.renderHeight = std::min(h, kMaxRenderSize);
         session_.setRenderSize(uint32_t(s.renderWidth), uint32_t(s.renderHeight));
         session_.markDirty(kDirtyCamera);
-    }
-
-    RenderInfo renderInfo(const Display& display) {
-        RenderInfo info;
-        info.backend = session_.backend().name();
-        info.device = session_.backend().deviceName();
-        info.displayPath = displayPathName(display.path());
-        if (!display.interopFailure().empty() && display.path() == DisplayPath::Host && info.backend == "cuda")
-            info.displayPath += " (interop: " + display.interopFailure() + ")";
-        info.cudaBuilt = cudaBuilt_;
-        info.width = session_.renderWidth();
-        info.height = session_.renderHeight();
-        if (session_.previewDivisor() > 1) info.displayPath += ", preview at 1/" + std::to_string(session_.previewDivisor());
-        info.passes = session_.passes();
-        info.cyclePasses = session_.cyclePasses();
-        info.samples = session_.samples();
-        info.blocks = describeBlocks(session_.blocks());
-        info.elapsedSeconds = session_.renderSeconds();
-        if (info.elapsedSeconds > 0) {
-            info.samplesPerSecond = info.samples * info.width * info.height / info.elapsedSeconds;
-            info.mraysPerSecond = double(session_.rays()) / info.elapsedSeconds * 1e-6;
-        }
-        for (const Diagnostic& d : session_.flattenWarnings().items) info.unsupported.push_back(formatDiagnostic(d));
-        return info;
     }
 
     int finishAutomation() {
@@ -319,17 +427,40 @@ private:
     const ViewerOptions& options_;
     Window& window_;
     ViewerSession& session_;
+    std::string title_;
     CameraController controller_;
     PanelState state_;
     ExportController exports_;
     ViewerStats stats_;
+    SceneEditor editor_;
+    SceneFiles files_;
     bool cudaBuilt_ = false;
     bool screenshotPending_ = false;
     bool imageShown_ = false, fullImageShown_ = false;
     uint64_t shownGeneration_ = ~uint64_t(0);
     int settleFrames_ = 0;
     Clock::time_point lastEdit_{};
+    ViewTransform view_;
+    ImageRect area_;
+    float menuHeight_ = 0, framebufferScale_ = 1;
+    std::vector<uint8_t> outline_;
 };
+
+// HiDPI: the font is made at the screen's content scale and drawn at 1 / (framebuffer pixels per window
+// coordinate), the sizes scaled to match; returns the UI's scale in window coordinates per UI point (1 on a
+// plain screen; 2 on an X11 or Windows screen at 200 %; 1 on a Retina screen, whose framebuffer is twice the
+// window instead).
+float setUpUiScale(const Window& window) {
+    const float content = window.screen().contentScale, framebuffer = window.framebufferScale();
+    ImGuiIO& io = ImGui::GetIO();
+    ImFontConfig font;
+    font.SizePixels = 13.0f * content;
+    io.Fonts->AddFontDefault(&font);
+    io.FontGlobalScale = 1.0f / framebuffer;
+    const float uiScale = content / framebuffer;
+    ImGui::GetStyle().ScaleAllSizes(uiScale);
+    return uiScale;
+}
 
 }  // namespace
 
@@ -352,12 +483,9 @@ int runViewer(const ViewerOptions& options) {
     const uint32_t height = options.height ? options.height : uint32_t(scene.settings.renderHeight);
     scene.settings.renderWidth = int(width);  // the Scene settings panel shows the size in use
     scene.settings.renderHeight = int(height);
-    int windowWidth, windowHeight;
-    initialWindowSize(width, height, windowWidth, windowHeight);
-
     std::string error;
-    std::unique_ptr<Window> window = Window::open(
-        "trazo — " + std::filesystem::path(options.scenePath).filename().string(), windowWidth, windowHeight, error);
+    std::unique_ptr<Window> window =
+        Window::open("trazo — " + std::filesystem::path(options.scenePath).filename().string(), error);
     if (!window) {
         std::fprintf(stderr, "trazo: cannot open the viewer: %s; render without a window with `trazo --render %s -o image.png`\n",
                      error.c_str(), options.scenePath.c_str());
@@ -385,10 +513,16 @@ int runViewer(const ViewerOptions& options) {
         ImGui::CreateContext();
         ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the user's folder
         ImGui::StyleColorsDark();
+        const float uiScale = setUpUiScale(*window);
+        int windowWidth, windowHeight;
+        initialWindowSize(width, height, kPanelWidth * uiScale, 13.0f * uiScale + 2 * ImGui::GetStyle().FramePadding.y,
+                          window->framebufferScale(),
+                          window->screen().width, window->screen().height, windowWidth, windowHeight);
+        window->show(windowWidth, windowHeight);
         ImGui_ImplGlfw_InitForOpenGL(window->handle(), true);  // chains to the window's own callbacks
         ImGui_ImplOpenGL3_Init("#version 330 core");
         {
-            ViewerApp app(options, *window, session, start);
+            ViewerApp app(options, *window, session, start, kPanelWidth * uiScale);
             status = app.run(display);
         }
         session.waitIdle();

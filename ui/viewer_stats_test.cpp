@@ -50,5 +50,24 @@ TEST(ViewerStats, DragRateCountsFramesOfOneDrag) {
               "fps (10 frames, 5.0 ms of work each); 0 batches");
 }
 
+TEST(ViewerStats, MoveLatencyRunsFromTheFirstInputToTheImageOfTheBatchAfterIt) {
+    const Clock::time_point t0{};
+    ViewerStats stats(t0);
+    EXPECT_EQ(stats.imageShown(t0 + milliseconds(5)), -1.0);  // no move: nothing measured
+    stats.moveInput(t0 + milliseconds(10));
+    stats.moveInput(t0 + milliseconds(20));                   // the same image will show both
+    EXPECT_EQ(stats.imageShown(t0 + milliseconds(30)), -1.0); // an older batch's image: not the move's
+    stats.batchStarted();
+    EXPECT_DOUBLE_EQ(stats.imageShown(t0 + milliseconds(70)), 0.060);
+    EXPECT_EQ(stats.imageShown(t0 + milliseconds(80)), -1.0); // measured once
+    stats.moveInput(t0 + milliseconds(100));
+    stats.batchStarted();
+    EXPECT_DOUBLE_EQ(stats.imageShown(t0 + milliseconds(120)), 0.020);
+    EXPECT_EQ(stats.summary(t0 + milliseconds(1000)),
+              "first image after -1.000 s (full size after -1.000 s); 1.00 s open, 0 frames drawn; while dragging 0.0 "
+              "fps (0 frames, 0.0 ms of work each); 2 batches; object moves shown after 40.0 ms on average (worst "
+              "60.0 ms, 2 images)");
+}
+
 }  // namespace
 }  // namespace trazo
