@@ -53,8 +53,8 @@ public:
     }
     void readAccumulation(std::vector<AccumPixel>& out) override { out.assign(size_t(calls_.width) * calls_.height, {}); }
     uint64_t raysTraced() const override { return 0; }
-    double traceRays(const std::vector<RayQuery>& queries, bool, std::vector<float>& out) override {
-        out.assign(queries.size(), INFINITY);  // the session never asks
+    double traceRays(const std::vector<RayQuery>& queries, RayQueryKind, std::vector<RayAnswer>& out) override {
+        out.assign(queries.size(), RayAnswer{INFINITY, kMissAnswer});  // the session never asks
         return 0.0;
     }
     using Backend::traceRays;

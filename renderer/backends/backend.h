@@ -3,7 +3,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -51,12 +50,12 @@ public:
     virtual void readAccumulation(std::vector<AccumPixel>& out) = 0;
     // Rays traced since the last reset.
     virtual uint64_t raysTraced() const = 0;
-    // Answers every query against the uploaded scene (answerRayQuery; benchmarks and agreement tests) into
-    // `out`. Returns the seconds spent tracing, without copies to or from the device.
-    virtual double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) = 0;
-    // The same for any RayQueryKind, with what each nearest hit belongs to (RayQueryKind::Object: the viewer's
-    // picking). The default answers Nearest and Shadow through the overload above and refuses Object.
-    virtual double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out);
+    // Answers every query against the uploaded scene (answerRayQuery: benchmarks, agreement tests, the
+    // viewer's picking with RayQueryKind::Object) into `out`. Returns the seconds spent tracing, without
+    // copies to or from the device.
+    virtual double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) = 0;
+    // Nearest (t, +inf on a miss) or shadow (1 blocked, 0 not) answers alone.
+    double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out);
 
     // Display (the viewer): writes the current estimate, sum / count as float RGBA (alpha 1, row 0 = top),
     // into the OpenGL buffer object `glBuffer` (at least width·height·16 bytes; width × height must be the
@@ -73,12 +72,11 @@ public:
     virtual void releaseGlBuffer() {}
 };
 
-inline double Backend::traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) {
-    if (kind == RayQueryKind::Object) throw std::runtime_error("the " + name() + " backend answers no object queries");
-    std::vector<float> answers;
-    const double seconds = traceRays(queries, kind == RayQueryKind::Shadow, answers);
+inline double Backend::traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) {
+    std::vector<RayAnswer> answers;
+    const double seconds = traceRays(queries, shadow ? RayQueryKind::Shadow : RayQueryKind::Nearest, answers);
     out.resize(answers.size());
-    for (size_t i = 0; i < answers.size(); ++i) out[i] = RayAnswer{answers[i], kMissAnswer};
+    for (size_t i = 0; i < answers.size(); ++i) out[i] = answers[i].t;
     return seconds;
 }
 

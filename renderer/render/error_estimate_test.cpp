@@ -114,8 +114,8 @@ public:
     }
     void readAccumulation(std::vector<AccumPixel>& out) override { out = accum_; }
     uint64_t raysTraced() const override { return 0; }
-    double traceRays(const std::vector<RayQuery>& queries, bool, std::vector<float>& out) override {
-        out.assign(queries.size(), INFINITY);  // no scene: nothing is hit
+    double traceRays(const std::vector<RayQuery>& queries, RayQueryKind, std::vector<RayAnswer>& out) override {
+        out.assign(queries.size(), RayAnswer{INFINITY, kMissAnswer});  // no scene: nothing is hit
         return 0.0;
     }
 

@@ -98,15 +98,7 @@ public:
     void readAccumulation(std::vector<AccumPixel>& out) override { out = accum_; }
     uint64_t raysTraced() const override { return rays_; }
 
-    double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) override {
-        out.resize(queries.size());
-        constexpr size_t kChunk = 4096;
-        const auto start = std::chrono::steady_clock::now();
-        pool_.parallelFor(queries.size(), kChunk, [&](size_t begin, size_t end) {
-            for (size_t i = begin; i < end; ++i) out[i] = answerRayQuery(view_, queries[i], shadow);
-        });
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
+    using Backend::traceRays;
     double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) override {
         out.resize(queries.size());
         constexpr size_t kChunk = 4096;

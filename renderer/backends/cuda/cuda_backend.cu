@@ -31,12 +31,7 @@ namespace {
                                      #call + ": " + cudaGetErrorString(status_));                      \
     } while (0)
 
-__global__ void rayQueryKernel(SceneView scene, const RayQuery* queries, uint32_t count, bool shadow, float* out) {
-    const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-    if (i < count) out[i] = answerRayQuery(scene, queries[i], shadow);
-}
-
-__global__ void rayAnswerKernel(SceneView scene, const RayQuery* queries, uint32_t count, RayQueryKind kind,
+__global__ void rayQueryKernel(SceneView scene, const RayQuery* queries, uint32_t count, RayQueryKind kind,
                                 RayAnswer* out) {
     const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
     if (i < count) out[i] = answerRayQuery(scene, queries[i], kind);
@@ -219,26 +214,7 @@ public:
         return rays;
     }
 
-    double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) override {
-        out.assign(queries.size(), 0.0f);
-        if (queries.empty()) return 0.0;
-        queries_.assign(queries);
-        answers_.resizeForOutput(queries.size());  // every answer is written by the kernel: nothing to upload
-        const uint32_t count = (uint32_t)queries.size();
-        constexpr uint32_t kBlock = 128;
-        const EventTimer timer;
-        TRAZO_CUDA_CHECK(cudaEventRecord(timer.start));
-        rayQueryKernel<<<(count + kBlock - 1) / kBlock, kBlock>>>(view_, queries_.data(), count, shadow,
-                                                                  answers_.data());
-        TRAZO_CUDA_CHECK(cudaGetLastError());
-        TRAZO_CUDA_CHECK(cudaEventRecord(timer.stop));
-        TRAZO_CUDA_CHECK(cudaEventSynchronize(timer.stop));
-        float milliseconds = 0.0f;
-        TRAZO_CUDA_CHECK(cudaEventElapsedTime(&milliseconds, timer.start, timer.stop));
-        TRAZO_CUDA_CHECK(cudaMemcpy(out.data(), answers_.data(), count * sizeof(float), cudaMemcpyDeviceToHost));
-        return milliseconds * 1e-3;
-    }
-
+    using Backend::traceRays;
     double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) override {
         out.assign(queries.size(), RayAnswer{0.0f, kMissAnswer});
         if (queries.empty()) return 0.0;
@@ -248,7 +224,7 @@ public:
         constexpr uint32_t kBlock = 128;
         const EventTimer timer;
         TRAZO_CUDA_CHECK(cudaEventRecord(timer.start));
-        rayAnswerKernel<<<(count + kBlock - 1) / kBlock, kBlock>>>(view_, queries_.data(), count, kind, hits_.data());
+        rayQueryKernel<<<(count + kBlock - 1) / kBlock, kBlock>>>(view_, queries_.data(), count, kind, hits_.data());
         TRAZO_CUDA_CHECK(cudaGetLastError());
         TRAZO_CUDA_CHECK(cudaEventRecord(timer.stop));
         TRAZO_CUDA_CHECK(cudaEventSynchronize(timer.stop));
@@ -270,7 +246,6 @@ private:
     } device_;
     SceneView view_{};
     DeviceArray<RayQuery> queries_;  // traceRays' buffers, kept for the next call
-    DeviceArray<float> answers_;
     DeviceArray<RayAnswer> hits_;
     AccumPixel* accum_ = nullptr;
     unsigned long long* rayCounter_ = nullptr;
