@@ -7,7 +7,11 @@
 namespace trazo {
 
 void addAccumulation(std::vector<AccumPixel>& total, const std::vector<AccumPixel>& part) {
-    for (size_t i = 0; i < total.size(); ++i) {
+    addPixels(total.data(), part.data(), std::min(total.size(), part.size()));
+}
+
+void addPixels(AccumPixel* total, const AccumPixel* part, size_t count) {
+    for (size_t i = 0; i < count; ++i) {
         AccumPixel& t = total[i];
         const AccumPixel& p = part[i];
         for (int c = 0; c < 3; ++c) {
@@ -98,15 +102,18 @@ bool mergePartialFiles(const std::vector<std::string>& paths, const MergeOptions
 
     const Fingerprint& f = merged.fingerprint;
     result.accum.assign((size_t)f.width * f.height, AccumPixel{});
-    std::vector<AccumPixel> part;
     for (size_t i : order) {
         PartialHeader again;
-        if (!readPartialFile(paths[i], again, part, error)) return false;
+        // Added as read, a chunk at a time: a merge holds one image. A part that turns out corrupt at its
+        // end leaves the total unusable, and the merge fails without writing anything.
+        const auto add = [&](size_t first, const AccumPixel* pixels, size_t count) {
+            if (first + count <= result.accum.size()) addPixels(result.accum.data() + first, pixels, count);
+        };
+        if (!readPartialPixels(paths[i], again, add, error)) return false;
         if (fingerprintDifference(again.fingerprint, headers[i].fingerprint) != "" || again.passes != headers[i].passes) {
             error = paths[i] + ": changed while it was being merged";
             return false;
         }
-        addAccumulation(result.accum, part);
     }
     return true;
 }

@@ -16,6 +16,8 @@ namespace trazo {
 // parts equals the sum of one render of all its passes to within the bound in docs/PARTIAL_FORMAT.md (counts
 // exactly), and adding the parts in one fixed order makes the result independent of how they were listed.
 void addAccumulation(std::vector<AccumPixel>& total, const std::vector<AccumPixel>& part);
+// The same for `count` pixels: total[i] += part[i].
+void addPixels(AccumPixel* total, const AccumPixel* part, size_t count);
 
 // How far apart two sums of the same n non-negative samples can be when added in different orders (one render
 // in pass order, or its parts' sums added): each is within γ = (n-1)u / (1-(n-1)u) of the exact sum, u = 2^-53

@@ -402,13 +402,11 @@ bool readPartialHeader(const std::string& path, PartialHeader& header, std::stri
     return true;
 }
 
-bool readPartialFile(const std::string& path, PartialHeader& header, std::vector<AccumPixel>& accum,
-                     std::string& error) {
+bool readPartialPixels(const std::string& path, PartialHeader& header, const TakePixels& take, std::string& error) {
     File file(nullptr, &std::fclose);
     ParsedHeader parsed;
     if (!openPartial(path, file, parsed, error)) return false;
     const uint64_t pixels = (uint64_t)parsed.header.fingerprint.width * parsed.header.fingerprint.height;
-    accum.resize(pixels);
     Xxhash64 hash;
     // The header as it stands in the file: re-read, since the parse above read it from a prefix.
     std::string text(parsed.headerBytes, '\0');
@@ -420,22 +418,25 @@ bool readPartialFile(const std::string& path, PartialHeader& header, std::vector
         hash.update(data, size);
         return true;
     };
+    std::vector<AccumPixel> chunk(kChunkPixels);
     if (parsed.uniform) {
         double counts[2] = {0, 0};
         ok = ok && readAll(counts, sizeof counts);
-        std::vector<double> chunk(kChunkPixels * 6);
+        std::vector<double> packed(kChunkPixels * 6);
         for (size_t begin = 0; ok && begin < pixels; begin += kChunkPixels) {
             const size_t n = std::min<size_t>(pixels - begin, kChunkPixels);
-            ok = readAll(chunk.data(), n * 6 * sizeof(double));
+            ok = readAll(packed.data(), n * 6 * sizeof(double));
             for (size_t i = 0; ok && i < n; ++i) {
-                const double* d = &chunk[6 * i];
-                accum[begin + i] = AccumPixel{{d[0], d[1], d[2]}, counts[0], {d[3], d[4], d[5]}, counts[1]};
+                const double* d = &packed[6 * i];
+                chunk[i] = AccumPixel{{d[0], d[1], d[2]}, counts[0], {d[3], d[4], d[5]}, counts[1]};
             }
+            if (ok) take(begin, chunk.data(), n);
         }
     } else {
         for (size_t begin = 0; ok && begin < pixels; begin += kChunkPixels) {
             const size_t n = std::min<size_t>(pixels - begin, kChunkPixels);
-            ok = readAll(accum.data() + begin, n * sizeof(AccumPixel));
+            ok = readAll(chunk.data(), n * sizeof(AccumPixel));
+            if (ok) take(begin, chunk.data(), n);
         }
     }
     uint64_t stored = 0;
@@ -452,6 +453,16 @@ bool readPartialFile(const std::string& path, PartialHeader& header, std::vector
     }
     header = parsed.header;
     return true;
+}
+
+bool readPartialFile(const std::string& path, PartialHeader& header, std::vector<AccumPixel>& accum,
+                     std::string& error) {
+    PartialHeader h;
+    if (!readPartialHeader(path, h, error)) return false;
+    accum.resize((size_t)h.fingerprint.width * h.fingerprint.height);
+    return readPartialPixels(path, header, [&](size_t first, const AccumPixel* pixels, size_t count) {
+        if (first + count <= accum.size()) std::copy(pixels, pixels + count, accum.begin() + (ptrdiff_t)first);
+    }, error);
 }
 
 }  // namespace trazo

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -64,5 +65,11 @@ bool readPartialHeader(const std::string& path, PartialHeader& header, std::stri
 // Reads the whole file and checks its checksum; `accum` gets width × height pixels.
 bool readPartialFile(const std::string& path, PartialHeader& header, std::vector<AccumPixel>& accum,
                      std::string& error);
+
+// The same without holding the file's pixels: `take(first, pixels, count)` gets them in order, a few thousand
+// at a time (a merge adds them to its total as they come, so it holds one image, not two). The checksum is
+// known only at the end: on false, what `take` was given must be thrown away.
+using TakePixels = std::function<void(size_t first, const AccumPixel* pixels, size_t count)>;
+bool readPartialPixels(const std::string& path, PartialHeader& header, const TakePixels& take, std::string& error);
 
 }  // namespace trazo
