@@ -44,6 +44,7 @@ bool parseDevices(const std::string& text, CommandLine::DeviceList& out, std::st
 std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     CLI::App app{"Trazo: a ray tracer for the scene language of SPEC.md, on CPU and CUDA", "trazo"};
     app.set_version_flag("--version", "trazo " TRAZO_VERSION);
+    app.footer("trazo merge PARTS... -o IMAGE merges partial renders (--partial) into one image: trazo merge --help");
     app.add_option("SCENE", out.viewerScene, "Scene to open in the interactive viewer");
     app.add_option("--render", out.renderScene, "Render SCENE headless to a file")->type_name("SCENE");
     app.add_option("-o,--output", out.output, "Output image; format by extension (png bmp jpg tga exr hdr pfm)")
@@ -172,8 +173,10 @@ std::optional<int> parseMergeCommandLine(int argc, char** argv, MergeCommandLine
     CLI::App app{"Merge partial renders (trazo --render SCENE --passes A:B --partial FILE) into the image of one "
                  "render of all their passes", "trazo merge"};
     app.add_option("PARTS", out.parts, "Partial files, in any order")->required()->type_name("PART...");
-    app.add_option("-o,--output", out.output, "Output image; format by extension (png bmp jpg tga exr hdr pfm)");
-    app.add_option("--stats", out.statsPath, "Write the merged counts and timings as JSON to this file");
+    app.add_option("-o,--output", out.output, "Output image; format by extension (png bmp jpg tga exr hdr pfm)")
+        ->type_name("IMAGE");
+    app.add_option("--stats", out.statsPath, "Write the merged counts and timings as JSON to this file")
+        ->type_name("FILE");
     app.add_option("--partial", out.partialPath, "Also write the merge as a partial file (to merge further)")
         ->type_name("FILE");
     app.add_flag("--allow-gaps", out.allowGaps, "Merge the passes there are when some are missing (and name them)");

@@ -201,9 +201,8 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     // cameraPathPasses); bounded only by the time or the target error when either is given.
     const bool openEnded = options.seconds > 0 || options.targetError > 0;
     const bool openEndedPartial = !options.spp && !options.passes && openEnded;
-    const PassRange range = options.passes ? *options.passes
-                                           : PassRange{0, options.spp ? *options.spp
-                                                                      : (openEnded ? kMaxProgressivePasses : cameraPasses)};
+    const uint32_t defaultEnd = options.spp ? *options.spp : (openEnded ? kMaxProgressivePasses : cameraPasses);
+    const PassRange range = options.passes ? *options.passes : PassRange{0, defaultEnd};
     const uint32_t passes = range.count();
     // A long render says what it will cost before it starts (a time limit bounds it already).
     if (options.seconds <= 0) {

@@ -30,7 +30,8 @@ CliRun trazo(const std::string& arguments) {
     return CliRun{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readFileText(errFile)};
 }
 
-const std::string kSeed = "--render " + sourcePath("scenes/scene1_area.scene") + " --width 64 --height 48 --backend cpu --quiet";
+const std::string kSeed =
+    "--render " + sourcePath("scenes/scene1_area.scene") + " --width 64 --height 48 --backend cpu --quiet";
 
 // A PFM's floats (RGB, as stored) after its three header lines.
 std::vector<float> readPfm(const std::string& path) {
@@ -137,17 +138,18 @@ TEST(PartialCli, TimeLimitWritesThePassesRendered) {
 TEST(PartialCli, SigtermFinishesTheBatchAndWritesThePassesRendered) {
     const std::string part = tempPath("signalled.part"), status = tempPath("signalled.status");
     fs::remove(part);
+    const std::string errors = tempPath("signalled.err");
     const std::string command = trazoBinary() + " " + kSeed + " --passes 0:1000000 --partial " + part + " 2>" +
-                                tempPath("signalled.err") + " & pid=$!; sleep 2; kill -TERM $pid; wait $pid; echo $? >" +
-                                status;
+                                errors + " & pid=$!; sleep 2; kill -TERM $pid; wait $pid; echo $? >" + status;
     ASSERT_EQ(std::system(("bash -c '" + command + "'").c_str()), 0);
-    EXPECT_EQ(readFileText(status), "3\n") << readFileText(tempPath("signalled.err"));
+    EXPECT_EQ(readFileText(status), "3\n") << readFileText(errors);
     PartialHeader h;
     readAccum(part, h);
     ASSERT_EQ(h.passes.size(), 1u);
     EXPECT_GT(h.passes[0].end, 0u);
-    EXPECT_NE(readFileText(tempPath("signalled.err")).find("stopped by signal 15 after passes " + formatRange(h.passes[0])),
-              std::string::npos);
+    EXPECT_NE(readFileText(errors).find("stopped by signal 15 after passes " + formatRange(h.passes[0])),
+              std::string::npos)
+        << readFileText(errors);
 }
 
 TEST(PartialCli, MergeRefusalsWriteNothing) {

@@ -110,7 +110,8 @@ bool mergePartialFiles(const std::vector<std::string>& paths, const MergeOptions
             if (first + count <= result.accum.size()) addPixels(result.accum.data() + first, pixels, count);
         };
         if (!readPartialPixels(paths[i], again, add, error)) return false;
-        if (fingerprintDifference(again.fingerprint, headers[i].fingerprint) != "" || again.passes != headers[i].passes) {
+        if (!fingerprintDifference(again.fingerprint, headers[i].fingerprint).empty() ||
+            again.passes != headers[i].passes) {
             error = paths[i] + ": changed while it was being merged";
             return false;
         }

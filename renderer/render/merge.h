@@ -22,9 +22,10 @@ void addPixels(AccumPixel* total, const AccumPixel* part, size_t count);
 // How far apart two sums of the same n non-negative samples can be when added in different orders (one render
 // in pass order, or its parts' sums added): each is within γ = (n-1)u / (1-(n-1)u) of the exact sum, u = 2^-53
 // (Higham, Accuracy and Stability of Numerical Algorithms, §4.2, for any order), so they differ by at most
-// 2γ / (1-γ) relative to either. The image's float pixels (sum / count, counts equal: two quotients within
-// this + 2^-52 relative) then differ by at most one ulp while that stays below 2^-25, half the smallest relative
-// float spacing, so that no two rounding midpoints lie between them: up to 2^26 passes.
+// 2γ / (1-γ) relative to either. (A scene with a negative colour has samples of both signs; the bound then
+// holds relative to the sum of their magnitudes.) The image's float pixels (sum / count, counts equal: two
+// quotients within this + 2^-52 relative) then differ by at most one ulp while that stays below 2^-25, half
+// the smallest relative float spacing, so no two rounding midpoints lie between them: up to 2^26 passes.
 double mergeRelativeBound(uint32_t passes);
 
 struct MergeOptions {

@@ -95,7 +95,8 @@ TEST(Merge, ReportsOverlappingPassesByNumber) {
 
 TEST(Merge, ReportsMissingPassesByNumberAndAllowGapsMergesWhatExists) {
     // 8:16 missing between parts; 20:24 asked of the last part, which stopped at 20 (a time limit).
-    const std::vector<std::string> parts{writePart("g0.part", {0, 8}, 1.0), writePart("g2.part", {16, 20}, 1.0, {16, 24})};
+    const std::vector<std::string> parts{writePart("g0.part", {0, 8}, 1.0),
+                                         writePart("g2.part", {16, 20}, 1.0, {16, 24})};
     MergeResult r;
     std::string error;
     EXPECT_FALSE(mergePartialFiles(parts, {}, r, error));
@@ -201,9 +202,9 @@ TEST(Merge, SeedSceneInFourPartsEqualsOneRenderWithinTheBound) {
         h.requested = range;
         parts.push_back(tempPath("seed" + std::to_string(range.first) + ".part"));
         std::string error;
-        ASSERT_TRUE(writePartialFile(parts.back(), h,
-                                     test::renderSeedAccumulation(*backend, "scene1_area.scene", 64, 48, {range}), error))
-            << error;
+        const std::vector<AccumPixel> accum =
+            test::renderSeedAccumulation(*backend, "scene1_area.scene", 64, 48, {range});
+        ASSERT_TRUE(writePartialFile(parts.back(), h, accum, error)) << error;
     }
     MergeResult r;
     std::string error;

@@ -335,7 +335,8 @@ std::string fingerprintDifference(const Fingerprint& a, const Fingerprint& b) {
             return "assets (" + a.assets[i].path + " xxh64 " + hexHash(a.assets[i].hash) + " vs " + b.assets[i].path +
                    " xxh64 " + hexHash(b.assets[i].hash) + ")";
     if (a.fullCycle != b.fullCycle)
-        return "settings (full-cycle=" + std::to_string(a.fullCycle) + " vs full-cycle=" + std::to_string(b.fullCycle) + ")";
+        return "settings (full-cycle=" + std::to_string(a.fullCycle) + " vs full-cycle=" +
+               std::to_string(b.fullCycle) + ")";
     if (a.width != b.width || a.height != b.height)
         return "size (" + std::to_string(a.width) + "x" + std::to_string(a.height) + " vs " + std::to_string(b.width) +
                "x" + std::to_string(b.height) + ")";

@@ -21,10 +21,12 @@ uint64_t read64(const unsigned char* p) {
     for (int i = 7; i >= 0; --i) v = (v << 8) | p[i];
     return v;
 }
-uint32_t read32(const unsigned char* p) { return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24; }
+uint32_t read32(const unsigned char* p) {
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
 
-uint64_t round(uint64_t acc, uint64_t lane) { return rotl(acc + lane * kPrime2, 31) * kPrime1; }
-uint64_t mergeRound(uint64_t acc, uint64_t lane) { return (acc ^ round(0, lane)) * kPrime1 + kPrime4; }
+uint64_t laneRound(uint64_t acc, uint64_t lane) { return rotl(acc + lane * kPrime2, 31) * kPrime1; }
+uint64_t mergeRound(uint64_t acc, uint64_t lane) { return (acc ^ laneRound(0, lane)) * kPrime1 + kPrime4; }
 
 }  // namespace
 
@@ -42,15 +44,15 @@ void Xxhash64::update(const void* data, size_t size) {
     if (buffered_) {
         const size_t fill = 32 - buffered_;
         std::memcpy(buffer_ + buffered_, p, fill);
-        for (int i = 0; i < 4; ++i) acc_[i] = round(acc_[i], read64(buffer_ + 8 * i));
+        for (int i = 0; i < 4; ++i) acc_[i] = laneRound(acc_[i], read64(buffer_ + 8 * i));
         p += fill, size -= fill, buffered_ = 0;
     }
     uint64_t a0 = acc_[0], a1 = acc_[1], a2 = acc_[2], a3 = acc_[3];
     for (; size >= 32; p += 32, size -= 32) {
-        a0 = round(a0, read64(p));
-        a1 = round(a1, read64(p + 8));
-        a2 = round(a2, read64(p + 16));
-        a3 = round(a3, read64(p + 24));
+        a0 = laneRound(a0, read64(p));
+        a1 = laneRound(a1, read64(p + 8));
+        a2 = laneRound(a2, read64(p + 16));
+        a3 = laneRound(a3, read64(p + 24));
     }
     acc_[0] = a0, acc_[1] = a1, acc_[2] = a2, acc_[3] = a3;
     if (size) std::memcpy(buffer_, p, size);
@@ -68,7 +70,7 @@ uint64_t Xxhash64::digest() const {
     h += total_;
     const unsigned char* p = buffer_;
     size_t left = buffered_;
-    for (; left >= 8; p += 8, left -= 8) h = rotl(h ^ round(0, read64(p)), 27) * kPrime1 + kPrime4;
+    for (; left >= 8; p += 8, left -= 8) h = rotl(h ^ laneRound(0, read64(p)), 27) * kPrime1 + kPrime4;
     if (left >= 4) {
         h = rotl(h ^ (uint64_t)read32(p) * kPrime1, 23) * kPrime2 + kPrime3;
         p += 4, left -= 4;

@@ -31,7 +31,8 @@ TEST(Xxhash64, PiecesOfAnySizeGiveTheWholeHash) {
     const std::string data = bytes771();
     for (size_t piece : {1u, 3u, 7u, 31u, 32u, 33u, 100u}) {
         Xxhash64 h;
-        for (size_t at = 0; at < data.size(); at += piece) h.update(data.data() + at, std::min(piece, data.size() - at));
+        for (size_t at = 0; at < data.size(); at += piece)
+            h.update(data.data() + at, std::min(piece, data.size() - at));
         EXPECT_EQ(h.digest(), 0xe921a1b45bd779f8ull) << "pieces of " << piece;
     }
 }
