@@ -121,9 +121,11 @@ void checkPasses(cudaError_t status, uint32_t first, uint32_t end) {
 
 class CudaBackend final : public Backend {
 public:
-    CudaBackend() {
+    // Every call first makes `device` current on its thread: a MultiBackend drives each device from its own.
+    explicit CudaBackend(int device) : deviceIndex_(device) {
+        useDevice();
         cudaDeviceProp prop{};
-        TRAZO_CUDA_CHECK(cudaGetDeviceProperties(&prop, 0));
+        TRAZO_CUDA_CHECK(cudaGetDeviceProperties(&prop, deviceIndex_));
         deviceName_ = prop.name;
         // A binary without code for this device fails here, where `auto` can still take the CPU, rather than
         // at the first launch.
@@ -141,6 +143,7 @@ public:
         TRAZO_CUDA_CHECK(cudaMemset(rayCounter_, 0, sizeof(unsigned long long)));
     }
     ~CudaBackend() override {
+        cudaSetDevice(deviceIndex_);  // the members' device arrays are freed after this body, on this device
         cudaFree(accum_);
         cudaFree(rayCounter_);
     }
@@ -159,6 +162,7 @@ public:
     void upload(const SceneArrays& a) override { upload(a, kAllArrays); }
     // Arrays outside `changed` are neither compared nor sent.
     void upload(const SceneArrays& a, ArrayMask changed) override {
+        useDevice();
         std::string why;
         if (!accepts(a, why)) throw std::runtime_error(why);
 #define TRAZO_X(T, name, ...)                                            \
@@ -170,6 +174,7 @@ public:
         view_.features = a.features;
     }
     void resize(uint32_t width, uint32_t height) override {
+        useDevice();
         cudaFree(accum_);
         accum_ = nullptr;
         width_ = height_ = 0;  // until the new buffer exists: nothing to clear or read
@@ -179,10 +184,12 @@ public:
         reset();
     }
     void reset() override {
+        useDevice();
         TRAZO_CUDA_CHECK(cudaMemset(accum_, 0, pixelCount() * sizeof(AccumPixel)));
         TRAZO_CUDA_CHECK(cudaMemset(rayCounter_, 0, sizeof(unsigned long long)));
     }
     void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override {
+        useDevice();
         const dim3 block(kPassBlockX, kPassBlockY);
         const dim3 grid((width_ + block.x - 1) / block.x, (height_ + block.y - 1) / block.y);
         const auto launch = kLaunchVariants[sampleVariantFor(view_.features)];
@@ -194,6 +201,7 @@ public:
         checkPasses(cudaDeviceSynchronize(), firstPass, firstPass + passCount);
     }
     void readAccumulation(std::vector<AccumPixel>& out) override {
+        useDevice();
         out.resize(pixelCount());
         TRAZO_CUDA_CHECK(cudaMemcpy(out.data(), accum_, pixelCount() * sizeof(AccumPixel), cudaMemcpyDeviceToHost));
     }
@@ -202,6 +210,7 @@ public:
             why = "the GL buffer's size differs from the accumulation's";
             return false;
         }
+        useDevice();
         if (!glDisplay_) glDisplay_.reset(createCudaGlDisplay());
         return resolveIntoGlBuffer(*glDisplay_, glBuffer, accum_, width, height, why);
     }
@@ -209,6 +218,7 @@ public:
         if (glDisplay_) releaseCudaGlDisplay(*glDisplay_);
     }
     uint64_t raysTraced() const override {
+        useDevice();
         unsigned long long rays = 0;
         TRAZO_CUDA_CHECK(cudaMemcpy(&rays, rayCounter_, sizeof(rays), cudaMemcpyDeviceToHost));
         return rays;
@@ -218,6 +228,7 @@ public:
     double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) override {
         out.assign(queries.size(), RayAnswer{0.0f, kMissAnswer});
         if (queries.empty()) return 0.0;
+        useDevice();
         queries_.assign(queries);
         hits_.resizeForOutput(queries.size());
         const uint32_t count = (uint32_t)queries.size();
@@ -236,7 +247,9 @@ public:
 
 private:
     size_t pixelCount() const { return (size_t)width_ * height_; }
+    void useDevice() const { TRAZO_CUDA_CHECK(cudaSetDevice(deviceIndex_)); }
 
+    int deviceIndex_ = 0;
     std::string deviceName_;
     bool syncEveryPass_ = false;
     struct DeviceScene {
@@ -269,13 +282,26 @@ bool cudaDeviceAvailableImpl(std::string& deviceName) {
     return true;
 }
 
-std::unique_ptr<Backend> createCudaBackend(std::string& error) {
+int cudaDeviceCountImpl(std::string& why) {
+    int count = 0;
+    const cudaError_t status = cudaGetDeviceCount(&count);
+    if (status != cudaSuccess || count == 0) {
+        why = status != cudaSuccess ? cudaGetErrorString(status) : "no CUDA device found";
+        cudaGetLastError();
+        return 0;
+    }
+    return count;
+}
+
+std::unique_ptr<Backend> createCudaBackendOnImpl(int index, std::string& error) {
     try {
-        return std::make_unique<CudaBackend>();
+        return std::make_unique<CudaBackend>(index);
     } catch (const std::exception& e) {
         error = e.what();
         return nullptr;
     }
 }
+
+std::unique_ptr<Backend> createCudaBackend(std::string& error) { return createCudaBackendOnImpl(0, error); }
 
 }  // namespace trazo
