@@ -73,7 +73,7 @@ else
     done <<<"$missing" >"$ranges"
     count=$(wc -l <"$ranges")
     spec=0-$((count - 1))
-    what="$count task(s) for the missing passes $(awk '{ printf "%s%s:%s", NR > 1 ? "," : "", $1, $2 }' <<<"$missing")"
+    what="$count task(s) for the missing passes $(awk '{ printf "%s%s:%s", (NR > 1 ? "," : ""), $1, $2 }' <<<"$missing")"
 fi
 
 # The merge jobs still waiting would wait forever on the failed task (afterok), or merge before the new tasks.
