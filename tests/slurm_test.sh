@@ -79,11 +79,11 @@ expect_image() {  # expect_image DIR N
     echo "  image = single render of 0:$2 ($how)"
 }
 
-# (a) 4 tasks of 4 passes, merged by the merge job.
+# (a) 4 tasks of 4 passes, merged by the merge job. A 5-minute limit: trazo is given 270 s.
 echo "(a) a 4-task array and its merge job"
 reference 16
-out=$("$slurm/submit.sh" "$scene" --passes 16 --tasks 4 --out "$work/a" --image image.pfm --trazo "$trazo" \
-    -- "${size[@]}" 2>&1) || fail "submit.sh: $out"
+out=$("$slurm/submit.sh" "$scene" --passes 16 --tasks 4 --time 5 --out "$work/a" --image image.pfm \
+    --trazo "$trazo" -- "${size[@]}" 2>&1) || fail "submit.sh: $out"
 echo "$out" | sed 's/^/  /'
 array=$(array_of "$out") merge=$(merge_of "$out")
 [ -n "$array" ] && [ -n "$merge" ] || fail "submit.sh printed no job ids"
@@ -93,16 +93,24 @@ for task in 0 1 2 3; do
     [ "$(job_state "${array}_$task")" = COMPLETED ] || fail "task $task: $(job_state "${array}_$task")"
 done
 [ "$(job_state "$merge")" = COMPLETED ] || fail "merge job $merge: $(job_state "$merge")"
+scontrol show job "${array}_0" | grep -q "TimeLimit=00:05:00" || fail "task 0 has no 5-minute limit"
+grep -q -- "--passes 0:4 --partial $work/a/parts/0-4.partial --quiet --backend cpu --threads 1 --time 270 " \
+    "$work/a/logs/task-${array}_0.log" || fail "task 0 ran: $(tail -n 1 "$work/a/logs/task-${array}_0.log")"
 [ "$(cd "$work/a/parts" && ls | sort -n | paste -sd' ' -)" = "0-4.partial 4-8.partial 8-12.partial 12-16.partial" ] ||
     fail "parts: $(ls "$work/a/parts")"
 expect_image "$work/a" 16
 
-# (b) 2 tasks long enough to cancel one mid-render: passes a task from a timed render of 40 (about 3 s a task).
+# (b) 2 tasks long enough to cancel one mid-render: about 3 s a task, from the time of 40 passes here.
 echo "(b) a task cancelled mid-render, then resubmitted alone"
-start=$(date +%s%N)
-"$trazo" --render "$scene" --passes 0:40 -o "$work/timing.pfm" "${size[@]}" --backend cpu --threads 1 --quiet \
-    2>/dev/null || fail "the timing render"
-per_pass_ms=$((($(date +%s%N) - start) / 40000000 + 1))
+render_ns() {  # the wall time of a one-thread render of $1 passes, start-up included
+    local start
+    start=$(date +%s%N)
+    "$trazo" --render "$scene" --passes "0:$1" -o "$work/timing.pfm" "${size[@]}" --backend cpu --threads 1 --quiet \
+        2>/dev/null || fail "the timing render"
+    echo $(($(date +%s%N) - start))
+}
+short=$(render_ns 10) long=$(render_ns 50)
+per_pass_ms=$(((long - short) / 40000000 + 1))
 half=$((3000 / per_pass_ms))
 ((half < 40)) && half=40
 ((half > 2000)) && half=2000
@@ -162,5 +170,22 @@ wait_job "$array"
 wait_job "$merge"
 [ "$(job_state "$merge")" = COMPLETED ] || fail "the fill's merge job $merge: $(job_state "$merge")"
 expect_image "$work/a" 16
+
+# (d) --gpu: the tasks ask for one GPU each and run trazo --backend cuda (the test cluster counts one GPU; the
+# tasks succeed only where trazo has CUDA and the machine a GPU).
+echo "(d) --gpu tasks"
+out=$("$slurm/submit.sh" "$scene" --passes 4 --tasks 2 --gpu --out "$work/d" --image image.pfm --trazo "$trazo" \
+    -- "${size[@]}" 2>&1) || fail "submit.sh --gpu: $out"
+array=$(array_of "$out") merge=$(merge_of "$out")
+wait_job "$array"
+scontrol show job "${array}_0" | grep -q "TresPerNode=gres:gpu:1" || fail "task 0 asked for no GPU"
+grep -q -- "--backend cuda" "$work/d/logs/task-${array}_0.log" || fail "task 0 did not run trazo --backend cuda"
+if [ "$(job_state "${array}_0")" = COMPLETED ]; then
+    wait_job "$merge"
+    [ "$(job_state "$merge")" = COMPLETED ] || fail "the GPU render's merge job: $(job_state "$merge")"
+    echo "  2 GPU tasks and their merge completed"
+else
+    echo "  GPU tasks scheduled with gres/gpu=1; trazo here: $(tail -n 1 "$work/d/logs/task-${array}_0.log")"
+fi
 
 echo "PASS in $((SECONDS - started)) s"

@@ -29,5 +29,6 @@ fi
 [ -n "$budget" ] && args+=(--time "$budget")
 
 echo "trazo task $task of job ${SLURM_ARRAY_JOB_ID:-?}: passes $first:$end on $(hostname)"
+echo "$(printf '%q ' "$TRAZO" "${args[@]}" "${EXTRA[@]}")"
 # exec: trazo itself receives Slurm's signals and its status is the task's.
 exec "$TRAZO" "${args[@]}" "${EXTRA[@]}"

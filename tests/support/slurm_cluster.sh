@@ -112,10 +112,14 @@ InactiveLimit=0
 MinJobAge=600
 SlurmctldTimeout=30
 SlurmdTimeout=30
-NodeName=$node NodeAddr=127.0.0.1 CPUs=$cpus State=UNKNOWN
+GresTypes=gpu
+NodeName=$node NodeAddr=127.0.0.1 CPUs=$cpus Gres=gpu:1 State=UNKNOWN
 PartitionName=test Nodes=$node Default=YES MaxTime=INFINITE State=UP
 EOF
     : >"$d/plugstack.conf"
+    # One GPU without a device file: --gres=gpu:1 jobs are accepted and scheduled (what they run finds a GPU only
+    # where the machine has one).
+    echo "NodeName=$node Name=gpu File=/dev/null" >"$d/gres.conf"
     export SLURM_CONF=$d/slurm.conf
 
     local ctld=slurmctld slurmd=slurmd
