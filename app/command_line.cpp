@@ -3,10 +3,43 @@
 
 #include <CLI/CLI.hpp>
 
+#include "render/progressive_render.h"
 #include "render/strata_plan.h"
 #include "scene/scene.h"
 
 namespace trazo {
+
+namespace {
+
+// "all" or device numbers separated by commas, each once.
+bool parseDevices(const std::string& text, CommandLine::DeviceList& out, std::string& why) {
+    out = CommandLine::DeviceList{};
+    if (text == "all") {
+        out.all = true;
+        return true;
+    }
+    size_t at = 0;
+    while (at <= text.size()) {
+        size_t comma = text.find(',', at);
+        if (comma == std::string::npos) comma = text.size();
+        const std::string item = text.substr(at, comma - at);
+        if (item.empty() || item.size() > 4 || item.find_first_not_of("0123456789") != std::string::npos) {
+            why = "expected all, or CUDA device numbers separated by commas (e.g. 0,1)";
+            return false;
+        }
+        const int id = std::stoi(item);
+        for (int seen : out.ids)
+            if (seen == id) {
+                why = "device " + item + " is listed twice";
+                return false;
+            }
+        out.ids.push_back(id);
+        at = comma + 1;
+    }
+    return true;
+}
+
+}  // namespace
 
 std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     CLI::App app{"Trazo: a ray tracer for the scene language of SPEC.md, on CPU and CUDA", "trazo"};
@@ -42,6 +75,16 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     app.add_option("--frames", out.frames, "Viewer: run N passes in the window, save --screenshot, exit 0")
         ->check(CLI::Range(1u, 1u << 24))
         ->type_name("N");
+    std::string passes, devices;
+    app.add_option("--passes", passes,
+                   "Render passes A to B-1 (A:B): the same samples as those passes of --spp B; with --partial, "
+                   "for a merge")
+        ->type_name("A:B");
+    app.add_option("--partial", out.partialPath,
+                   "Write the raw accumulation of the passes (docs/PARTIAL_FORMAT.md) for `trazo merge`, no image")
+        ->type_name("FILE");
+    app.add_option("--devices", devices, "With --backend cuda: split the passes over these CUDA devices (all, or 0,1)")
+        ->type_name("all|N,N");
     app.add_option("--screenshot", out.screenshot,
                    "Viewer: image written after --frames passes (else the screenshot key's default name)")
         ->type_name("FILE");
@@ -67,6 +110,48 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         }
         out.blocks = parsed;
     }
+    if (!passes.empty()) {
+        PassRange range;
+        std::string why;
+        if (!parsePassRange(passes, range, why, kMaxProgressivePasses)) {
+            std::fprintf(stderr, "trazo: --passes %s: %s\n", passes.c_str(), why.c_str());
+            return 2;
+        }
+        out.passes = range;
+    }
+    if (!devices.empty()) {
+        CommandLine::DeviceList list;
+        std::string why;
+        if (!parseDevices(devices, list, why)) {
+            std::fprintf(stderr, "trazo: --devices %s: %s\n", devices.c_str(), why.c_str());
+            return 2;
+        }
+        out.devices = list;
+    }
+    const bool splitRender = out.passes || !out.partialPath.empty() || out.devices;
+    if (!out.viewerScene.empty() && splitRender) {
+        std::fputs("trazo: --passes, --partial and --devices are for headless renders (`trazo --render SCENE`)\n",
+                   stderr);
+        return 2;
+    }
+    if (out.passes && out.spp) {
+        std::fputs("trazo: give either --spp N or --passes A:B (--spp N renders passes 0:N)\n", stderr);
+        return 2;
+    }
+    if (!out.partialPath.empty() && app.count("--output") > 0) {
+        std::fputs("trazo: --partial writes the passes' accumulation, not an image: leave out -o (make the image "
+                   "with `trazo merge PARTS... -o IMAGE`)\n", stderr);
+        return 2;
+    }
+    if ((out.passes || !out.partialPath.empty()) && out.targetError > 0) {
+        std::fputs("trazo: --target-error needs the whole render's error: it cannot stop a part of one (--passes, "
+                   "--partial); use --spp or --time\n", stderr);
+        return 2;
+    }
+    if (out.devices && out.backend != BackendChoice::Cuda) {
+        std::fputs("trazo: --devices chooses CUDA devices: it needs --backend cuda\n", stderr);
+        return 2;
+    }
     if (out.renderScene.empty() && out.viewerScene.empty()) {
         std::fputs("trazo: no scene given; try `trazo --render SCENE -o image.png` or `trazo --help`\n", stderr);
         return 2;
@@ -78,6 +163,43 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     if (!out.renderScene.empty() && (out.frames || !out.screenshot.empty())) {
         std::fputs("trazo: --frames and --screenshot are for the viewer (`trazo SCENE --frames N --screenshot FILE`); "
                    "with --render use --spp and -o\n", stderr);
+        return 2;
+    }
+    return std::nullopt;
+}
+
+std::optional<int> parseMergeCommandLine(int argc, char** argv, MergeCommandLine& out) {
+    CLI::App app{"Merge partial renders (trazo --render SCENE --passes A:B --partial FILE) into the image of one "
+                 "render of all their passes", "trazo merge"};
+    app.add_option("PARTS", out.parts, "Partial files, in any order")->required()->type_name("PART...");
+    app.add_option("-o,--output", out.output, "Output image; format by extension (png bmp jpg tga exr hdr pfm)");
+    app.add_option("--stats", out.statsPath, "Write the merged counts and timings as JSON to this file");
+    app.add_option("--partial", out.partialPath, "Also write the merge as a partial file (to merge further)")
+        ->type_name("FILE");
+    app.add_flag("--allow-gaps", out.allowGaps, "Merge the passes there are when some are missing (and name them)");
+    std::string passes;
+    app.add_option("--passes", passes, "The passes the parts must cover (default: 0 to the last pass asked for)")
+        ->type_name("A:B");
+    app.add_flag("--quiet", out.quiet, "Only errors and warnings on stderr");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return 2;
+    }
+    if (!passes.empty()) {
+        PassRange range;
+        std::string why;
+        if (!parsePassRange(passes, range, why, kMaxProgressivePasses)) {
+            std::fprintf(stderr, "trazo: merge: --passes %s: %s\n", passes.c_str(), why.c_str());
+            return 2;
+        }
+        out.passes = range;
+    }
+    if (out.output.empty() && out.partialPath.empty()) {
+        std::fputs("trazo: merge: nothing to write: give -o IMAGE, --partial FILE or both\n", stderr);
         return 2;
     }
     return std::nullopt;

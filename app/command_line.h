@@ -4,9 +4,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "backends/backend.h"
 #include "integrator/strata.h"
+#include "render/pass_range.h"
 
 namespace trazo {
 
@@ -29,10 +31,33 @@ struct CommandLine {
     bool quiet = false;
     std::optional<uint32_t> frames;  // viewer automation: run N passes in the window, save --screenshot, exit
     std::string screenshot;          // viewer: the automation's image, else the screenshot key's default name
+    // --passes A:B: render passes [A, B) (the same samples as those passes of --spp B). With --partial, the
+    // accumulation goes to that file instead of an image (docs/PARTIAL_FORMAT.md).
+    std::optional<PassRange> passes;
+    std::string partialPath;
+    // --devices all|0,1 (with --backend cuda): split each batch of passes over these CUDA devices.
+    struct DeviceList {
+        bool all = false;
+        std::vector<int> ids;
+    };
+    std::optional<DeviceList> devices;
+};
+
+// trazo merge PARTS... [-o IMAGE] [--stats FILE] [--allow-gaps] [--partial FILE] [--passes A:B] [--quiet]
+struct MergeCommandLine {
+    std::vector<std::string> parts;
+    std::string output;       // -o: the merged image (any format --render writes)
+    std::string statsPath;    // --stats: JSON, the keys of --render's where they apply, plus "parts"
+    std::string partialPath;  // --partial: the merged accumulation as a partial file again
+    bool allowGaps = false;
+    std::optional<PassRange> passes;  // the passes the parts must cover (default: 0 to the last asked for)
+    bool quiet = false;
 };
 
 // Parses argv. Returns the exit status to stop with (0 after --help/--version, 2 on bad usage, with the
 // message already printed), or nothing when the program should go on.
 std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out);
+// The same for `trazo merge` (argv[0] is "merge").
+std::optional<int> parseMergeCommandLine(int argc, char** argv, MergeCommandLine& out);
 
 }  // namespace trazo

@@ -1,7 +1,9 @@
 // The headless render: the seed's three timed phases (scene creation, upload, render), then the file.
 #include "headless_render.h"
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <new>
 #include <stdexcept>
@@ -16,6 +18,8 @@
 #include "progress_bar.h"
 #include "render/error_estimate.h"
 #include "render/frame_setup.h"
+#include "render/multi_backend.h"
+#include "render/partial_file.h"
 #include "render/progressive_render.h"
 #include "render/render_start.h"
 #include "render_stats.h"
@@ -51,11 +55,62 @@ std::string formatBytes(uint64_t bytes) {
 int renderScene(const CommandLine& options, const Scene& scene, RenderStats& stats,
                 std::chrono::steady_clock::time_point t0);
 
+// SIGTERM (what Slurm sends at a task's time limit) or SIGINT during a partial render: finish the batch, write
+// the partial of the passes done. The handler then goes back to the default, so a second signal ends it at once.
+std::atomic<bool> stopRequested{false};
+volatile std::sig_atomic_t stopSignal = 0;
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+
+void requestStop(int signal) {
+    stopSignal = signal;
+    stopRequested.store(true);
+}
+
+void stopOnSignals() {
+    struct sigaction action {};
+    action.sa_handler = requestStop;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESETHAND;
+    sigaction(SIGTERM, &action, nullptr);
+    sigaction(SIGINT, &action, nullptr);
+}
+
+// --devices: one CUDA backend per listed device, as a MultiBackend when there are several; with one device
+// exactly the backend `--backend cuda` opens on it. Null after saying why.
+std::unique_ptr<Backend> openDevices(const CommandLine::DeviceList& devices, const SceneArrays& arrays) {
+    std::string why;
+    const int count = cudaDeviceCount(why);
+    if (count == 0) {
+        std::fprintf(stderr, "trazo: --devices: cannot use the CUDA backend: %s\n", why.c_str());
+        return nullptr;
+    }
+    std::vector<int> ids = devices.ids;
+    if (devices.all)
+        for (int i = 0; i < count; ++i) ids.push_back(i);
+    std::vector<std::unique_ptr<Backend>> backends;
+    for (int id : ids) {
+        if (id >= count) {
+            std::fprintf(stderr, "trazo: --devices: there is no CUDA device %d (this machine has %d: 0 to %d)\n", id,
+                         count, count - 1);
+            return nullptr;
+        }
+        std::unique_ptr<Backend> backend = createCudaBackendOn(id, why);
+        if (backend && !backend->accepts(arrays, why)) backend.reset();
+        if (!backend) {
+            std::fprintf(stderr, "trazo: --devices: cannot use CUDA device %d: %s\n", id, why.c_str());
+            return nullptr;
+        }
+        backends.push_back(std::move(backend));
+    }
+    if (backends.size() == 1) return std::move(backends[0]);
+    return std::make_unique<MultiBackend>(std::move(backends));
+}
+
 }  // namespace
 
 int runHeadlessRender(const CommandLine& options) {
     ImageFormat format;
-    if (!imageFormatFromPath(options.output, format)) {
+    if (options.partialPath.empty() && !imageFormatFromPath(options.output, format)) {
         std::fprintf(stderr, "trazo: %s\n", unknownImageFormatReason(options.output).c_str());
         return 2;
     }
@@ -105,6 +160,15 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     const uint64_t pixels = (uint64_t)stats.width * stats.height;
     const uint64_t hostBytes = pixels * kHostBytesPerPixel;
     const uint64_t physical = (uint64_t)sysconf(_SC_PHYS_PAGES) * (uint64_t)sysconf(_SC_PAGESIZE);
+    const bool partial = !options.partialPath.empty();
+    Fingerprint fingerprint;
+    if (partial) {
+        std::string error;
+        if (!hashSceneFiles(scene, fingerprint, error)) {
+            std::fprintf(stderr, "trazo: %s\n", error.c_str());
+            return 1;
+        }
+    }
     std::vector<AccumPixel> accum;
     std::vector<Vec3> image;
     auto refuseMemory = [&](const char* why) {
@@ -116,13 +180,15 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     if (physical > 0 && hostBytes > physical) return refuseMemory(", more than this machine has");
     try {
         accum.reserve(pixels);
-        image.reserve(pixels);
+        if (!partial) image.reserve(pixels);
     } catch (const std::bad_alloc&) {
         return refuseMemory(", which cannot be allocated");
     }
 
     std::string fallback;
-    std::unique_ptr<Backend> backend = openBackend(options.backend, options.threads, &flat.arrays, fallback);
+    std::unique_ptr<Backend> backend = options.devices
+                                           ? openDevices(*options.devices, flat.arrays)
+                                           : openBackend(options.backend, options.threads, &flat.arrays, fallback);
     if (!backend) return 1;
     stats.backend = backend->name();
     stats.device = backend->deviceName();
@@ -134,11 +200,15 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     // Default: one complete estimate (every stratum of every grid on the camera path once:
     // cameraPathPasses); bounded only by the time or the target error when either is given.
     const bool openEnded = options.seconds > 0 || options.targetError > 0;
-    const uint32_t passes = options.spp ? *options.spp : (openEnded ? kMaxProgressivePasses : cameraPasses);
+    const bool openEndedPartial = !options.spp && !options.passes && openEnded;
+    const PassRange range = options.passes ? *options.passes
+                                           : PassRange{0, options.spp ? *options.spp
+                                                                      : (openEnded ? kMaxProgressivePasses : cameraPasses)};
+    const uint32_t passes = range.count();
     // A long render says what it will cost before it starts (a time limit bounds it already).
     if (options.seconds <= 0) {
         const std::string note = longRenderNote(flat.arrays, blocks, options.targetError > 0 ? cameraPasses : passes,
-                                                !options.spp, stats.width, stats.height);
+                                                !options.spp && !options.passes, stats.width, stats.height);
         if (!note.empty()) std::fprintf(stderr, "trazo: note: %s\n", note.c_str());
     }
     t0 = std::chrono::steady_clock::now();
@@ -161,6 +231,11 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
         return 2;
     }
     limits.passes = passes;
+    limits.firstPass = range.first;
+    if (partial) {
+        limits.stop = &stopRequested;
+        stopOnSignals();
+    }
     ProgressBar bar(!options.quiet, options.seconds);
     const RenderOutcome outcome =
         renderProgressive(*backend, frame, limits, [&](const RenderProgress& p) { bar.update(p); });
@@ -172,12 +247,56 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     stats.targetError = options.targetError;
     stats.reachedTarget = outcome.reachedTarget;
 
+    const PassRange done{range.first, range.first + outcome.passes};
+    const bool signalled = stopRequested.load() && done.end < range.end;
+    if (outcome.passes == 0) {
+        std::fprintf(stderr, "trazo: stopped by signal %d before any pass; nothing was written\n", (int)stopSignal);
+        return 3;
+    }
     backend->readAccumulation(accum);  // into the capacity reserved above
-    backend.reset();                   // its accumulation is no longer needed: room for the writer's buffer
     const ErrorEstimate estimate = estimateError(accum);
     stats.estimatedRelError = estimate.relError;
-    stats.estimateBalanced =
-        estimate.available && splitsHalves(limits.cyclePasses) && outcome.passes % (2 * limits.cyclePasses) == 0;
+    // Balanced where the halves hold equal strata: whole windows of 2·cycle passes from a window's start.
+    const uint64_t window = 2ull * limits.cyclePasses;
+    stats.estimateBalanced = estimate.available && splitsHalves(limits.cyclePasses) && done.first % window == 0 &&
+                             outcome.passes % window == 0;
+    if (partial) {
+        PartialHeader header;
+        header.fingerprint = fingerprint;
+        header.fingerprint.width = stats.width;
+        header.fingerprint.height = stats.height;
+        header.fingerprint.seed = options.seed;
+        header.fingerprint.blocks = stats.blocks;
+        header.fingerprint.fullCycle = stats.fullCycle;
+        header.fingerprint.version = "trazo " TRAZO_VERSION;
+        header.passes = {done};
+        header.requested = openEndedPartial ? done : range;
+        header.rays = outcome.rays;
+        header.seconds = outcome.seconds;
+        header.backend = describeBackend(*backend, "");
+        backend.reset();
+        std::string error;
+        if (!writePartialFile(options.partialPath, header, accum, error)) {
+            std::fprintf(stderr, "trazo: %s\n", error.c_str());
+            return 1;
+        }
+        if (openEndedPartial)
+            std::fprintf(stderr, "trazo: stopped by --time after passes %s: wrote them to %s\n",
+                         formatRange(done).c_str(), options.partialPath.c_str());
+        else if (done != header.requested || signalled)
+            std::fprintf(stderr, "trazo: %s after passes %s of %s: wrote them to %s\n",
+                         signalled ? ("stopped by signal " + std::to_string((int)stopSignal)).c_str()
+                                   : "stopped by --time",
+                         formatRange(done).c_str(), formatRange(range).c_str(), options.partialPath.c_str());
+        stats.peakRssMb = peakRssMegabytes();
+        if (!options.quiet) std::fputs(formatStatsSummary(stats).c_str(), stderr);
+        if (!options.statsPath.empty() && !writeTextFileAtomically(options.statsPath, formatStatsJson(stats), error)) {
+            std::fprintf(stderr, "trazo: %s\n", error.c_str());
+            return 1;
+        }
+        return signalled ? 3 : 0;
+    }
+    backend.reset();  // its accumulation is no longer needed: room for the writer's buffer
     for (const AccumPixel& p : accum) image.push_back(p.estimate());  // resolveImage, into the reserved image
     std::vector<AccumPixel>().swap(accum);
 

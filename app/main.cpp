@@ -1,13 +1,21 @@
-// trazo: headless render (--render) or the interactive viewer (SCENE, with --frames/--screenshot for automation).
+// trazo: headless render (--render), merge of partial renders (merge), or the interactive viewer (SCENE, with
+// --frames/--screenshot for automation).
 #include <cstdio>
+#include <cstring>
 
 #include "command_line.h"
 #include "headless_render.h"
+#include "merge_command.h"
 #if defined(TRAZO_HAS_VIEWER)
 #include "viewer_app.h"
 #endif
 
 int main(int argc, char** argv) {
+    if (argc > 1 && std::strcmp(argv[1], "merge") == 0) {
+        trazo::MergeCommandLine merge;
+        if (auto status = trazo::parseMergeCommandLine(argc - 1, argv + 1, merge)) return *status;
+        return trazo::runMerge(merge);
+    }
     trazo::CommandLine options;
     if (auto status = trazo::parseCommandLine(argc, argv, options)) return *status;
     if (!options.renderScene.empty()) return trazo::runHeadlessRender(options);

@@ -6,8 +6,6 @@
 
 namespace trazo {
 
-namespace {
-
 std::string jsonString(const std::string& s) {
     std::string out = "\"";
     for (char c : s) {
@@ -21,14 +19,12 @@ std::string jsonString(const std::string& s) {
     return out + "\"";
 }
 
-std::string number(double v) {
+std::string jsonNumber(double v) {
     if (!std::isfinite(v)) return "null";
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", v);
     return buf;
 }
-
-}  // namespace
 
 std::string formatStatsSummary(const RenderStats& s) {
     char buf[768];
@@ -61,15 +57,15 @@ std::string formatStatsJson(const RenderStats& s) {
         j += std::string("  \"") + key + "\": " + value + (last ? "\n" : ",\n");
     };
     add("scene", jsonString(s.scene));
-    add("parse_s", number(s.parseSeconds));
-    add("read_s", number(s.readSeconds));
-    add("build_s", number(s.buildSeconds));
-    add("upload_s", number(s.uploadSeconds));
-    add("render_s", number(s.renderSeconds));
+    add("parse_s", jsonNumber(s.parseSeconds));
+    add("read_s", jsonNumber(s.readSeconds));
+    add("build_s", jsonNumber(s.buildSeconds));
+    add("upload_s", jsonNumber(s.uploadSeconds));
+    add("render_s", jsonNumber(s.renderSeconds));
     add("spp", std::to_string(s.spp));
     add("full_cycle_spp", std::to_string(s.fullCycle));
     add("rays", std::to_string(s.rays));
-    add("mrays_per_s", number(s.mraysPerSecond()));
+    add("mrays_per_s", jsonNumber(s.mraysPerSecond()));
     add("backend", jsonString(s.backend));
     add("device", jsonString(s.device));
     add("width", std::to_string(s.width));
@@ -78,11 +74,11 @@ std::string formatStatsJson(const RenderStats& s) {
     add("features", jsonString(s.features));
     add("fixed_grid", s.fixedGrid ? "true" : "false");
     add("blocks", jsonString(s.blocks));
-    add("estimated_rel_error", number(s.estimatedRelError));
+    add("estimated_rel_error", jsonNumber(s.estimatedRelError));
     add("estimate_balanced", s.estimateBalanced ? "true" : "false");
-    add("target_error", number(s.targetError));
+    add("target_error", jsonNumber(s.targetError));
     add("reached_target", s.reachedTarget ? "true" : "false");
-    add("peak_rss_mb", number(s.peakRssMb), true);
+    add("peak_rss_mb", jsonNumber(s.peakRssMb), true);
     return j + "}\n";
 }
 

@@ -33,4 +33,8 @@ struct RenderStats {
 std::string formatStatsSummary(const RenderStats& s);  // human-readable, a few lines
 std::string formatStatsJson(const RenderStats& s);
 
+// JSON values as the stats files write them: a quoted, escaped string; a number (%.6g), null when not finite.
+std::string jsonString(const std::string& s);
+std::string jsonNumber(double v);
+
 }  // namespace trazo

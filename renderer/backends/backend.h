@@ -75,4 +75,10 @@ std::unique_ptr<Backend> createCpuBackend(unsigned threads);
 // True when this build has the CUDA backend and a usable device is present; names it.
 bool cudaDeviceAvailable(std::string& deviceName);
 
+// The CUDA devices present: 0 without the CUDA backend, a driver or a device (`why` then says which).
+int cudaDeviceCount(std::string& why);
+// A CUDA backend on device `index` (each of its calls makes that device current on the calling thread); null
+// with the reason. Device 0 is the backend createBackend(Cuda, ...) opens.
+std::unique_ptr<Backend> createCudaBackendOn(int index, std::string& error);
+
 }  // namespace trazo

@@ -6,7 +6,28 @@ namespace trazo {
 #if defined(TRAZO_HAS_CUDA)
 std::unique_ptr<Backend> createCudaBackend(std::string& error);  // backends/cuda/cuda_backend.cu
 bool cudaDeviceAvailableImpl(std::string& deviceName);
+std::unique_ptr<Backend> createCudaBackendOnImpl(int index, std::string& error);
+int cudaDeviceCountImpl(std::string& why);
 #endif
+
+int cudaDeviceCount(std::string& why) {
+#if defined(TRAZO_HAS_CUDA)
+    return cudaDeviceCountImpl(why);
+#else
+    why = "this build of trazo has no CUDA backend (nvcc was not found at configure time)";
+    return 0;
+#endif
+}
+
+std::unique_ptr<Backend> createCudaBackendOn(int index, std::string& error) {
+#if defined(TRAZO_HAS_CUDA)
+    return createCudaBackendOnImpl(index, error);
+#else
+    (void)index;
+    error = "this build of trazo has no CUDA backend (nvcc was not found at configure time)";
+    return nullptr;
+#endif
+}
 
 bool cudaDeviceAvailable(std::string& deviceName) {
 #if defined(TRAZO_HAS_CUDA)

@@ -46,10 +46,11 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
 
     RenderOutcome out;
     uint32_t batch = 1;
-    while (out.passes < maxPasses) {
+    auto stopped = [&] { return limits.stop && limits.stop->load(); };
+    while (out.passes < maxPasses && !stopped()) {
         const uint32_t count =
             (uint32_t)std::min<uint64_t>({batch, maxPasses - out.passes, nextCheck - out.passes});
-        renderPassRange(backend, frame, out.passes, count, limits.cyclePasses);
+        renderPassRange(backend, frame, limits.firstPass + out.passes, count, limits.cyclePasses);
         out.passes += count;
         const double t = elapsed();
 

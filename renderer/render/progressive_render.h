@@ -2,6 +2,7 @@
 // reached, in batches sized so progress reports (and the time limit) stay responsive. Host code.
 #pragma once
 
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -36,6 +37,9 @@ struct RenderLimits {
     // error is checked only at multiples of 2·cyclePasses, where the estimate is unbiased (and a stratified
     // image is at its best). 0: no halves and no target error.
     uint32_t cyclePasses = 0;
+    uint32_t firstPass = 0;  // the global index of the first pass (a partial render of passes [first, first + passes))
+    // When set and true (a signal handler sets it), the render stops after the current batch.
+    const std::atomic<bool>* stop = nullptr;
 };
 
 struct RenderProgress {
@@ -45,7 +49,7 @@ struct RenderProgress {
 };
 
 struct RenderOutcome {
-    uint32_t passes = 0;
+    uint32_t passes = 0;  // rendered: passes [firstPass, firstPass + passes)
     double seconds = 0.0;
     uint64_t rays = 0;
     double estimatedRelError = NAN;  // at the last target-error check (NaN when none was made)

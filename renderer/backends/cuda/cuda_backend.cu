@@ -120,9 +120,11 @@ void checkPasses(cudaError_t status, uint32_t first, uint32_t end) {
 
 class CudaBackend final : public Backend {
 public:
-    CudaBackend() {
+    // Every call first makes `device` current on its thread: a MultiBackend drives each device from its own.
+    explicit CudaBackend(int device) : device_(device) {
+        useDevice();
         cudaDeviceProp prop{};
-        TRAZO_CUDA_CHECK(cudaGetDeviceProperties(&prop, 0));
+        TRAZO_CUDA_CHECK(cudaGetDeviceProperties(&prop, device_));
         deviceName_ = prop.name;
         // A binary without code for this device fails here, where `auto` can still take the CPU, rather than
         // at the first launch.
@@ -140,6 +142,7 @@ public:
         TRAZO_CUDA_CHECK(cudaMemset(rayCounter_, 0, sizeof(unsigned long long)));
     }
     ~CudaBackend() override {
+        cudaSetDevice(device_);  // the members' device arrays are freed after this body, on this device
         cudaFree(accum_);
         cudaFree(rayCounter_);
     }
@@ -156,6 +159,7 @@ public:
         return false;
     }
     void upload(const SceneArrays& a) override {
+        useDevice();
         std::string why;
         if (!accepts(a, why)) throw std::runtime_error(why);
 #define TRAZO_X(T, name, ...)        \
@@ -167,6 +171,7 @@ public:
         view_.features = a.features;
     }
     void resize(uint32_t width, uint32_t height) override {
+        useDevice();
         cudaFree(accum_);
         accum_ = nullptr;
         width_ = height_ = 0;  // until the new buffer exists: nothing to clear or read
@@ -176,10 +181,12 @@ public:
         reset();
     }
     void reset() override {
+        useDevice();
         TRAZO_CUDA_CHECK(cudaMemset(accum_, 0, pixelCount() * sizeof(AccumPixel)));
         TRAZO_CUDA_CHECK(cudaMemset(rayCounter_, 0, sizeof(unsigned long long)));
     }
     void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override {
+        useDevice();
         const dim3 block(kPassBlockX, kPassBlockY);
         const dim3 grid((width_ + block.x - 1) / block.x, (height_ + block.y - 1) / block.y);
         const auto launch = kLaunchVariants[sampleVariantFor(view_.features)];
@@ -191,6 +198,7 @@ public:
         checkPasses(cudaDeviceSynchronize(), firstPass, firstPass + passCount);
     }
     void readAccumulation(std::vector<AccumPixel>& out) override {
+        useDevice();
         out.resize(pixelCount());
         TRAZO_CUDA_CHECK(cudaMemcpy(out.data(), accum_, pixelCount() * sizeof(AccumPixel), cudaMemcpyDeviceToHost));
     }
@@ -199,6 +207,7 @@ public:
             why = "the GL buffer's size differs from the accumulation's";
             return false;
         }
+        useDevice();
         if (!glDisplay_) glDisplay_.reset(createCudaGlDisplay());
         return resolveIntoGlBuffer(*glDisplay_, glBuffer, accum_, width, height, why);
     }
@@ -206,6 +215,7 @@ public:
         if (glDisplay_) releaseCudaGlDisplay(*glDisplay_);
     }
     uint64_t raysTraced() const override {
+        useDevice();
         unsigned long long rays = 0;
         TRAZO_CUDA_CHECK(cudaMemcpy(&rays, rayCounter_, sizeof(rays), cudaMemcpyDeviceToHost));
         return rays;
@@ -214,6 +224,7 @@ public:
     double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) override {
         out.assign(queries.size(), 0.0f);
         if (queries.empty()) return 0.0;
+        useDevice();
         queries_.assign(queries);
         answers_.resizeForOutput(queries.size());  // every answer is written by the kernel: nothing to upload
         const uint32_t count = (uint32_t)queries.size();
@@ -233,7 +244,9 @@ public:
 
 private:
     size_t pixelCount() const { return (size_t)width_ * height_; }
+    void useDevice() const { TRAZO_CUDA_CHECK(cudaSetDevice(device_)); }
 
+    int device_ = 0;
     std::string deviceName_;
     bool syncEveryPass_ = false;
     struct DeviceScene {
@@ -266,13 +279,26 @@ bool cudaDeviceAvailableImpl(std::string& deviceName) {
     return true;
 }
 
-std::unique_ptr<Backend> createCudaBackend(std::string& error) {
+int cudaDeviceCountImpl(std::string& why) {
+    int count = 0;
+    const cudaError_t status = cudaGetDeviceCount(&count);
+    if (status != cudaSuccess || count == 0) {
+        why = status != cudaSuccess ? cudaGetErrorString(status) : "no CUDA device found";
+        cudaGetLastError();
+        return 0;
+    }
+    return count;
+}
+
+std::unique_ptr<Backend> createCudaBackendOnImpl(int index, std::string& error) {
     try {
-        return std::make_unique<CudaBackend>();
+        return std::make_unique<CudaBackend>(index);
     } catch (const std::exception& e) {
         error = e.what();
         return nullptr;
     }
 }
+
+std::unique_ptr<Backend> createCudaBackend(std::string& error) { return createCudaBackendOnImpl(0, error); }
 
 }  // namespace trazo
