@@ -150,10 +150,19 @@ EOF
 # The slurmstepd processes of this cluster (they outlive slurmd by design): those whose open files lie in its
 # directory (each keeps its step's socket and the spool open).
 slurm_cluster_stepds() {
-    local pid
-    for pid in $(pgrep -x slurmstepd 2>/dev/null); do
+    local comm name pid
+    for comm in /proc/[0-9]*/comm; do  # not pgrep: procps is not on every minimal machine
+        read -r name 2>/dev/null <"$comm" && [ "$name" = slurmstepd ] || continue
+        pid=${comm#/proc/}
+        pid=${pid%/comm}
         ls -l "/proc/$pid/fd" 2>/dev/null | grep -q -- "-> $slurm_cluster_dir/" && echo "$pid"
     done
+}
+
+# Whether process $1 still runs (a child that exited stays a zombie until waited for; kill -0 finds it too).
+slurm_running() {
+    local state
+    state=$(cut -d' ' -f3 "/proc/$1/stat" 2>/dev/null) && [ "$state" != Z ]
 }
 
 slurm_cluster_stop() {
@@ -169,7 +178,7 @@ slurm_cluster_stop() {
     local pid
     for pid in $(slurm_cluster_stepds) "${slurm_cluster_pids[@]}"; do kill "$pid" 2>/dev/null; done
     for pid in "${slurm_cluster_pids[@]}"; do
-        for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+        for _ in $(seq 50); do slurm_running "$pid" || break; sleep 0.1; done
         kill -KILL "$pid" 2>/dev/null
         wait "$pid" 2>/dev/null
     done
