@@ -46,6 +46,8 @@ wait_job() {
     local deadline=$((SECONDS + ${2:-90}))
     while squeue -h -o %F | grep -qx "$1"; do
         ((SECONDS < deadline)) || fail "job $1 still queued after ${2:-90} s: $(squeue -h -o '%i %T %R')"
+        # Well inside CTest's TIMEOUT, which would kill this shell before it stops the daemons.
+        ((SECONDS - started < 240)) || fail "the test has run for 4 minutes: $(squeue -h -o '%i %T %R')"
         sleep 0.2
     done
 }

@@ -39,9 +39,10 @@ fi
 # --passes: the whole render, so that a part missing at the end is named too.
 "$TRAZO" merge "${parts[@]}" -o "$image" "${stats[@]}" --passes "0:$PASSES" "${gaps[@]}"
 status=$?
-if [ $status -eq 0 ]; then
-    [ "$check" = 1 ] && echo "merge.sh: nothing is missing: $dir/parts hold passes 0:$PASSES" >&2 ||
-        echo "merge.sh: wrote $IMAGE and $dir/stats.json" >&2
+if [ $status -eq 0 ] && [ "$check" = 1 ]; then
+    echo "merge.sh: nothing is missing: $dir/parts hold passes 0:$PASSES" >&2
+elif [ $status -eq 0 ]; then
+    echo "merge.sh: wrote $IMAGE and $dir/stats.json" >&2
 elif [ $status -eq 2 ]; then
     echo "merge.sh: render the missing passes with: scripts/slurm/resubmit.sh $dir" >&2
 fi

@@ -13,7 +13,12 @@ set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
 
-[ $# -ge 1 ] || { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
+usage() {  # $1: the exit status (0 for --help)
+    sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2
+    exit "${1:-2}"
+}
+[ $# -ge 1 ] || usage
+case $1 in -h | --help) usage 0 ;; esac
 load_render "$1"
 shift
 task_ids=() split=1 time_min=$TIME_MIN

@@ -19,12 +19,12 @@ set -euo pipefail
 # shellcheck source=common.sh
 source "$(dirname "$0")/common.sh"
 
-usage() {
+usage() {  # $1: the exit status (0 for --help)
     sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2
-    exit 2
+    exit "${1:-2}"
 }
 
-scene= passes= tasks= gpu=0 cpus=1 time_min= partition= out= image=image.exr trazo=${TRAZO:-}
+scene='' passes='' tasks='' gpu=0 cpus=1 time_min='' partition='' out='' image=image.exr trazo=${TRAZO:-}
 sbatch_args=()
 extra=()
 while [ $# -gt 0 ]; do
@@ -40,7 +40,7 @@ while [ $# -gt 0 ]; do
         --out) out=${2:?}; shift 2 ;;
         --image) image=${2:?}; shift 2 ;;
         --trazo) trazo=${2:?}; shift 2 ;;
-        -h | --help) usage ;;
+        -h | --help) usage 0 ;;
         --) shift; extra=("$@"); break ;;
         -*) die "unknown option $1 (extra trazo options go after --)" ;;
         *) [ -z "$scene" ] || die "one scene only ($scene, $1)"; scene=$1; shift ;;

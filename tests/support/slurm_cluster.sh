@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # A private single-node Slurm for tests: munged, slurmctld and slurmd as child processes of the calling shell,
 # every file (configuration, munge key and socket, state, spool, logs, pid files) under one directory, nothing
 # run through systemd and nothing written elsewhere. Source it from bash, then:
@@ -48,7 +49,7 @@ slurm_cluster_start() {
         fi
     done
     local d=$slurm_cluster_dir
-    # munged wants the socket's directory reachable by everyone and no directory on the way writable by others.
+    # munged wants no directory on the way to its key writable by others.
     mkdir -p "$d"/{munge,state,spool,log,run}
     chmod 755 "$d" "$d/munge"
     chmod 700 "$d/state" "$d/spool"
@@ -56,13 +57,12 @@ slurm_cluster_start() {
     chmod 400 "$d/munge/munge.key"
 
     local munged=munged; command -v munged >/dev/null 2>&1 || munged=/usr/sbin/munged
-    local force=(); [ "$(id -u)" -eq 0 ] && force=(--force)  # munged refuses root without it
-    "$munged" --foreground "${force[@]}" --socket="$d/munge/munge.socket" --key-file="$d/munge/munge.key" \
+    # --force: munged otherwise refuses a socket below a directory not everyone may enter (mktemp -d's 0700).
+    "$munged" --foreground --force --socket="$d/munge/munge.socket" --key-file="$d/munge/munge.key" \
         --pid-file="$d/run/munged.pid" --log-file="$d/log/munged.log" --seed-file="$d/munge/munged.seed" \
         >"$d/log/munged.stderr" 2>&1 &
     slurm_cluster_pids+=($!)
-    local i
-    for i in $(seq 50); do [ -S "$d/munge/munge.socket" ] && break; sleep 0.1; done
+    for _ in $(seq 50); do [ -S "$d/munge/munge.socket" ] && break; sleep 0.1; done
     if ! [ -S "$d/munge/munge.socket" ]; then
         echo "SKIP: munged did not start (no socket after 5 s)"
         slurm_cluster_logs; slurm_cluster_stop; return 77
@@ -132,7 +132,7 @@ EOF
     slurm_cluster_pids+=($!)
 
     local state=
-    for i in $(seq 150); do
+    for _ in $(seq 150); do
         state=$(sinfo -h -n "$node" -o %t 2>/dev/null)
         [ "$state" = idle ] && return 0
         local pid
@@ -155,6 +155,7 @@ slurm_cluster_stepds() {
         read -r name 2>/dev/null <"$comm" && [ "$name" = slurmstepd ] || continue
         pid=${comm#/proc/}
         pid=${pid%/comm}
+        # shellcheck disable=SC2010  # one ls for all the descriptors' targets
         ls -l "/proc/$pid/fd" 2>/dev/null | grep -q -- "-> $slurm_cluster_dir/" && echo "$pid"
     done
 }
@@ -169,8 +170,7 @@ slurm_cluster_stop() {
     [ -n "$slurm_cluster_dir" ] || return 0
     if [ -n "${SLURM_CONF:-}" ] && [ "${#slurm_cluster_pids[@]}" -gt 1 ]; then
         scancel --user="$(id -un)" >/dev/null 2>&1
-        local i
-        for i in $(seq 50); do
+        for _ in $(seq 50); do
             [ -z "$(squeue -h -o %i 2>/dev/null)" ] && [ -z "$(slurm_cluster_stepds)" ] && break
             sleep 0.2
         done
