@@ -133,9 +133,14 @@ wait_job "$array"
 [ "$(job_state "${array}_1")" = CANCELLED ] ||
     fail "task 1 ended $(job_state "${array}_1") before scancel reached it: its render is too short here"
 [ "$(job_state "${array}_0")" = COMPLETED ] || fail "task 0: $(job_state "${array}_0")"
-# afterok can no longer be satisfied: the merge job waits, never runs (22.05 keeps it pending).
-[ "$(job_state "$merge")" = PENDING ] && [ "$(job_reason "$merge")" = DependencyNeverSatisfied ] ||
-    fail "merge job $merge: $(job_state "$merge") $(job_reason "$merge")"
+# afterok can no longer be satisfied: the merge job waits, never runs (22.05 keeps it pending, with this reason
+# once the scheduler has looked at it again).
+deadline=$((SECONDS + 30))
+until [ "$(job_reason "$merge")" = DependencyNeverSatisfied ]; do
+    [ "$(job_state "$merge")" = PENDING ] && ((SECONDS < deadline)) ||
+        fail "merge job $merge: $(job_state "$merge") $(job_reason "$merge"), not pending on DependencyNeverSatisfied"
+    sleep 0.2
+done
 "$slurm/merge.sh" "$work/b" >"$work/b-merge.log" 2>&1
 status=$?
 cat "$work/b-merge.log" | sed 's/^/  /'
