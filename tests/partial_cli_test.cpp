@@ -19,15 +19,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CliRun {
     int status = -1;
     std::string errors;
 };
 
-Run trazo(const std::string& arguments) {
+CliRun trazo(const std::string& arguments) {
     const std::string errFile = tempPath("partial_stderr.txt");
     const int raw = std::system((trazoBinary() + " " + arguments + " 2>" + errFile + " >/dev/null").c_str());
-    return Run{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readFileText(errFile)};
+    return CliRun{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readFileText(errFile)};
 }
 
 const std::string kSeed = "--render " + sourcePath("scenes/scene1_area.scene") + " --width 64 --height 48 --backend cpu --quiet";
@@ -52,7 +52,7 @@ std::vector<AccumPixel> readAccum(const std::string& path, PartialHeader& header
 TEST(PartialCli, FourProcessesMergeToOneProcessOfTheSamePasses) {
     const std::string dir = freshDir("four_parts");
     // --passes 0:N -o is --spp N's image, bit for bit.
-    Run r = trazo(kSeed + " --passes 0:16 -o " + dir + "/single.pfm");
+    CliRun r = trazo(kSeed + " --passes 0:16 -o " + dir + "/single.pfm");
     ASSERT_EQ(r.status, 0) << r.errors;
     r = trazo(kSeed + " --spp 16 -o " + dir + "/spp.pfm");
     ASSERT_EQ(r.status, 0) << r.errors;
@@ -114,7 +114,7 @@ TEST(PartialCli, UsageErrors) {
 TEST(PartialCli, TimeLimitWritesThePassesRendered) {
     const std::string part = tempPath("timed.part");
     fs::remove(part);
-    const Run r = trazo(kSeed + " --passes 8:100000 --time 1 --partial " + part);
+    const CliRun r = trazo(kSeed + " --passes 8:100000 --time 1 --partial " + part);
     ASSERT_EQ(r.status, 0) << r.errors;
     PartialHeader h;
     const std::vector<AccumPixel> accum = readAccum(part, h);
@@ -127,7 +127,7 @@ TEST(PartialCli, TimeLimitWritesThePassesRendered) {
     EXPECT_NE(r.errors.find("trazo: stopped by --time after passes " + formatRange(h.passes[0]) + " of 8:100000"),
               std::string::npos) << r.errors;
     // The merge names what the time limit left out.
-    const Run m = trazo("merge --allow-gaps " + part + " -o " + tempPath("timed.pfm"));
+    const CliRun m = trazo("merge --allow-gaps " + part + " -o " + tempPath("timed.pfm"));
     EXPECT_EQ(m.status, 0) << m.errors;
     EXPECT_NE(m.errors.find("passes 0:8 are missing"), std::string::npos) << m.errors;
     EXPECT_NE(m.errors.find("passes " + std::to_string(h.passes[0].end) + ":100000 are missing"), std::string::npos)
@@ -157,7 +157,7 @@ TEST(PartialCli, MergeRefusalsWriteNothing) {
     ASSERT_EQ(trazo(kSeed + " --passes 2:4 --seed 9 --partial " + dir + "/c.part").status, 0);
     const std::string out = " -o " + dir + "/out.png --stats " + dir + "/out.json --partial " + dir + "/out.part";
 
-    Run r = trazo("merge " + dir + "/a.part " + dir + "/b.part" + out);
+    CliRun r = trazo("merge " + dir + "/a.part " + dir + "/b.part" + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.errors.find("trazo: merge: passes 2:4 are missing"), std::string::npos) << r.errors;
 

@@ -20,8 +20,9 @@ void addAccumulation(std::vector<AccumPixel>& total, const std::vector<AccumPixe
 // How far apart two sums of the same n non-negative samples can be when added in different orders (one render
 // in pass order, or its parts' sums added): each is within γ = (n-1)u / (1-(n-1)u) of the exact sum, u = 2^-53
 // (Higham, Accuracy and Stability of Numerical Algorithms, §4.2, for any order), so they differ by at most
-// 2γ / (1-γ) relative to either. The image's float pixels (sum / count, counts equal) then differ by at most one
-// ulp while this stays below 2^-25 (n up to about 2^27 passes).
+// 2γ / (1-γ) relative to either. The image's float pixels (sum / count, counts equal: two quotients within
+// this + 2^-52 relative) then differ by at most one ulp while that stays below 2^-25, half the smallest relative
+// float spacing, so that no two rounding midpoints lie between them: up to 2^26 passes.
 double mergeRelativeBound(uint32_t passes);
 
 struct MergeOptions {

@@ -18,7 +18,10 @@ std::string MultiBackend::name() const { return backends_[0]->name(); }
 
 std::string MultiBackend::deviceName() const {
     std::string text = std::to_string(backends_.size()) + " devices: ";
-    for (size_t i = 0; i < backends_.size(); ++i) text += (i ? ", " : "") + backends_[i]->deviceName();
+    for (size_t i = 0; i < backends_.size(); ++i) {
+        if (i) text += ", ";
+        text += backends_[i]->deviceName();
+    }
     return text;
 }
 

@@ -11,7 +11,10 @@ std::string formatRange(PassRange r) { return std::to_string(r.first) + ":" + st
 
 std::string formatRanges(const std::vector<PassRange>& ranges) {
     std::string text;
-    for (const PassRange& r : ranges) text += (text.empty() ? "" : ",") + formatRange(r);
+    for (const PassRange& r : ranges) {
+        if (!text.empty()) text += ',';
+        text += formatRange(r);
+    }
     return text;
 }
 

@@ -121,10 +121,10 @@ void checkPasses(cudaError_t status, uint32_t first, uint32_t end) {
 class CudaBackend final : public Backend {
 public:
     // Every call first makes `device` current on its thread: a MultiBackend drives each device from its own.
-    explicit CudaBackend(int device) : device_(device) {
+    explicit CudaBackend(int device) : deviceIndex_(device) {
         useDevice();
         cudaDeviceProp prop{};
-        TRAZO_CUDA_CHECK(cudaGetDeviceProperties(&prop, device_));
+        TRAZO_CUDA_CHECK(cudaGetDeviceProperties(&prop, deviceIndex_));
         deviceName_ = prop.name;
         // A binary without code for this device fails here, where `auto` can still take the CPU, rather than
         // at the first launch.
@@ -142,7 +142,7 @@ public:
         TRAZO_CUDA_CHECK(cudaMemset(rayCounter_, 0, sizeof(unsigned long long)));
     }
     ~CudaBackend() override {
-        cudaSetDevice(device_);  // the members' device arrays are freed after this body, on this device
+        cudaSetDevice(deviceIndex_);  // the members' device arrays are freed after this body, on this device
         cudaFree(accum_);
         cudaFree(rayCounter_);
     }
@@ -244,9 +244,9 @@ public:
 
 private:
     size_t pixelCount() const { return (size_t)width_ * height_; }
-    void useDevice() const { TRAZO_CUDA_CHECK(cudaSetDevice(device_)); }
+    void useDevice() const { TRAZO_CUDA_CHECK(cudaSetDevice(deviceIndex_)); }
 
-    int device_ = 0;
+    int deviceIndex_ = 0;
     std::string deviceName_;
     bool syncEveryPass_ = false;
     struct DeviceScene {
