@@ -102,7 +102,7 @@ grep -q -- "--passes 0:4 --partial $work/a/parts/0-4.partial --quiet --backend c
     fail "parts: $(ls "$work/a/parts")"
 expect_image "$work/a" 16
 
-# (b) 2 tasks long enough to cancel one mid-render: about 3 s a task, from the time of 40 passes here.
+# (b) 2 tasks long enough to cancel one mid-render: about 4 s a task, from the time of 40 passes here.
 echo "(b) a task cancelled mid-render, then resubmitted alone"
 render_ns() {  # the wall time of a one-thread render of $1 passes, start-up included
     local start
@@ -113,9 +113,9 @@ render_ns() {  # the wall time of a one-thread render of $1 passes, start-up inc
 }
 short=$(render_ns 10) long=$(render_ns 50)
 per_pass_ms=$(((long - short) / 40000000 + 1))
-half=$((3000 / per_pass_ms))
+half=$((4000 / per_pass_ms))
 ((half < 40)) && half=40
-((half > 2000)) && half=2000
+((half > 4000)) && half=4000
 passes=$((2 * half))
 echo "  ${per_pass_ms} ms a pass: 2 tasks of $half passes"
 reference "$passes"
@@ -127,7 +127,7 @@ until [ "$(job_state "${array}_1")" = RUNNING ] && grep -q "passes $half:$passes
     ((SECONDS < deadline)) || fail "task 1 did not start in 60 s"
     sleep 0.1
 done
-sleep 1
+sleep 0.5
 scancel "${array}_1"
 wait_job "$array"
 [ "$(job_state "${array}_1")" = CANCELLED ] ||
