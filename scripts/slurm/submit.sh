@@ -97,7 +97,10 @@ load_render "$out"
 array=$(submit_tasks "$render_dir/ranges.txt" "0-$((tasks - 1))" "$TIME_MIN")
 merge=$(submit_merge "afterok:$array")
 
-echo "trazo: job array $array: $tasks tasks of $passes passes of $(basename "$scene") ($([ "$GPU" = 1 ] && echo "1 GPU" || echo "$CPUS CPU") each)"
+each="$CPUS CPU"
+((CPUS > 1)) && each+=s
+[ "$GPU" = 1 ] && each="1 GPU, $each"
+echo "trazo: job array $array: $tasks tasks of $passes passes of $(basename "$scene") ($each each)"
 echo "trazo: merge job $merge runs when they all succeed"
 echo "trazo: image: $IMAGE"
 echo "trazo: check: scripts/slurm/status.sh $render_dir"
