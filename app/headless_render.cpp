@@ -276,10 +276,12 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
         header.backend = describeBackend(*backend, "");
         backend.reset();
         std::string error;
+        const auto writeStart = std::chrono::steady_clock::now();
         if (!writePartialFile(options.partialPath, header, accum, error)) {
             std::fprintf(stderr, "trazo: %s\n", error.c_str());
             return 1;
         }
+        stats.writeSeconds = secondsSince(writeStart);
         if (openEndedPartial)
             std::fprintf(stderr, "trazo: stopped by --time after passes %s: wrote them to %s\n",
                          formatRange(done).c_str(), options.partialPath.c_str());
@@ -301,10 +303,12 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     std::vector<AccumPixel>().swap(accum);
 
     std::string error;
+    const auto writeStart = std::chrono::steady_clock::now();
     if (!writeImage(options.output, (int)stats.width, (int)stats.height, image, error)) {
         std::fprintf(stderr, "trazo: %s\n", error.c_str());
         return 1;
     }
+    stats.writeSeconds = secondsSince(writeStart);
 
     stats.peakRssMb = peakRssMegabytes();
     if (!options.quiet) std::fputs(formatStatsSummary(stats).c_str(), stderr);

@@ -1,6 +1,7 @@
 // trazo merge: mergePartialFiles, then the image, the partial and the stats; the error estimate on stderr.
 #include "merge_command.h"
 
+#include <chrono>
 #include <cstdio>
 #include <new>
 
@@ -26,7 +27,15 @@ void printLines(const std::string& text) {
     }
 }
 
-std::string formatMergeJson(const MergeResult& r, double relError, bool balanced) {
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+struct MergeTimes {
+    double merge = 0, write = 0;  // reading and adding the parts; writing the image and the partial
+};
+
+std::string formatMergeJson(const MergeResult& r, double relError, bool balanced, const MergeTimes& times) {
     const PartialHeader& h = r.header;
     const Fingerprint& f = h.fingerprint;
     std::string j = "{\n";
@@ -39,6 +48,8 @@ std::string formatMergeJson(const MergeResult& r, double relError, bool balanced
     add("passes", jsonString(formatRanges(h.passes)));
     add("missing", jsonString(formatRanges(r.missing)));
     add("render_s", jsonNumber(h.seconds));
+    add("merge_s", jsonNumber(times.merge));
+    add("write_s", jsonNumber(times.write));
     add("rays", std::to_string(h.rays));
     add("mrays_per_s", jsonNumber(h.seconds > 0 ? h.rays / h.seconds * 1e-6 : 0.0));
     add("backend", jsonString(h.backend));
@@ -65,6 +76,8 @@ int runMerge(const MergeCommandLine& options) {
     mergeOptions.allowGaps = options.allowGaps;
     mergeOptions.expected = options.passes;
     std::string error;
+    MergeTimes times;
+    auto t0 = std::chrono::steady_clock::now();
     try {
         if (!mergePartialFiles(options.parts, mergeOptions, result, error)) {
             printLines(error);
@@ -75,6 +88,7 @@ int runMerge(const MergeCommandLine& options) {
         std::fputs("trazo: merge: out of memory (std::bad_alloc); nothing was written\n", stderr);
         return 1;
     }
+    times.merge = secondsSince(t0);
     const PartialHeader& h = result.header;
     const Fingerprint& f = h.fingerprint;
     const uint32_t passes = passCount(h.passes);
@@ -88,6 +102,7 @@ int runMerge(const MergeCommandLine& options) {
     const bool balanced = estimate.available && splitsHalves(f.fullCycle) && h.passes.size() == 1 &&
                           h.passes[0].first == 0 && passes % window == 0;
 
+    t0 = std::chrono::steady_clock::now();
     if (!options.partialPath.empty() && !writePartialFile(options.partialPath, h, result.accum, error)) {
         std::fprintf(stderr, "trazo: merge: %s\n", error.c_str());
         return 1;
@@ -99,8 +114,10 @@ int runMerge(const MergeCommandLine& options) {
             return 1;
         }
     }
+    times.write = secondsSince(t0);
     if (!options.statsPath.empty() &&
-        !writeTextFileAtomically(options.statsPath, formatMergeJson(result, estimate.relError, balanced), error)) {
+        !writeTextFileAtomically(options.statsPath, formatMergeJson(result, estimate.relError, balanced, times),
+                                 error)) {
         std::fprintf(stderr, "trazo: merge: %s\n", error.c_str());
         return 1;
     }

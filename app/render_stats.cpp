@@ -62,6 +62,7 @@ std::string formatStatsJson(const RenderStats& s) {
     add("build_s", jsonNumber(s.buildSeconds));
     add("upload_s", jsonNumber(s.uploadSeconds));
     add("render_s", jsonNumber(s.renderSeconds));
+    add("write_s", jsonNumber(s.writeSeconds));
     add("spp", std::to_string(s.spp));
     add("full_cycle_spp", std::to_string(s.fullCycle));
     add("rays", std::to_string(s.rays));

@@ -18,6 +18,7 @@ struct RenderStats {
     double parseSeconds = 0, uploadSeconds = 0, renderSeconds = 0;  // parseSeconds: all of scene creation
     double readSeconds = 0, buildSeconds = 0;  // scene creation's two parts: reading files (scene, OBJ, CSG,
                                                // textures), then building (flatten: meshes, BVHs)
+    double writeSeconds = 0;  // writing the output: the image, or the partial file (--partial)
     double peakRssMb = 0;                      // the process's peak resident set (getrusage), at the end
     uint64_t rays = 0;
     bool fixedGrid = false;             // --fixed-grid

@@ -143,6 +143,31 @@ TEST(Merge, AnyOrderOfThePartsGivesTheSameFile) {
     }
 }
 
+TEST(Merge, MergedPartialsMergeAgain) {
+    const std::vector<std::string> parts{writePart("h0.part", {0, 3}, 0.1), writePart("h1.part", {3, 4}, 0.3),
+                                         writePart("h2.part", {4, 9}, 0.7), writePart("h3.part", {9, 10}, 1.1)};
+    std::string error;
+    std::vector<std::string> halves;
+    for (size_t half = 0; half < 2; ++half) {
+        MergeOptions options;  // the second half starts at pass 4: it is asked for alone
+        if (half == 1) options.expected = PassRange{4, 10};
+        MergeResult r;
+        ASSERT_TRUE(mergePartialFiles({parts[2 * half], parts[2 * half + 1]}, options, r, error)) << error;
+        halves.push_back(tempPath("half" + std::to_string(half) + ".part"));
+        ASSERT_TRUE(writePartialFile(halves.back(), r.header, r.accum, error)) << error;
+    }
+    MergeResult flat, tree;
+    ASSERT_TRUE(mergePartialFiles(parts, {}, flat, error)) << error;
+    ASSERT_TRUE(mergePartialFiles({halves[1], halves[0]}, {}, tree, error)) << error;
+    EXPECT_EQ(tree.header.parts, 4u);
+    EXPECT_EQ(formatRanges(tree.header.passes), "0:10");
+    EXPECT_EQ(tree.header.rays, flat.header.rays);
+    for (size_t i = 0; i < flat.accum.size(); ++i) {
+        EXPECT_EQ(tree.accum[i].count, 10.0);
+        EXPECT_NEAR(tree.accum[i].sum[1], flat.accum[i].sum[1], mergeRelativeBound(10) * flat.accum[i].sum[1]);
+    }
+}
+
 TEST(Merge, BrokenPartsAreErrorsNamingThem) {
     const std::string good = writePart("b0.part", {0, 4}, 1.0), bad = writePart("b1.part", {4, 8}, 1.0);
     std::string bytes = test::readFileText(bad);
