@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake ninja-build pkg-config
   libglfw3-dev libimgui-dev libfreeimage-dev python3-glad libtinyobjloader-dev
   libgtest-dev libbenchmark-dev libcli11-dev libembree-dev povray
-  xvfb xauth xdotool x11-apps libgl1-mesa-dri mesa-utils)
+  xvfb xauth xdotool x11-apps libgl1-mesa-dri mesa-utils
+  slurm-wlm munge libxxhash-dev)
 
 if [ "${TRAZO_SKIP_APT:-0}" != 1 ]; then
   missing=()
