@@ -85,8 +85,8 @@ uint64_t MultiBackend::raysTraced() const {
     return rays;
 }
 
-double MultiBackend::traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) {
-    return backends_[0]->traceRays(queries, shadow, out);
+double MultiBackend::traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) {
+    return backends_[0]->traceRays(queries, kind, out);
 }
 
 }  // namespace trazo

@@ -25,7 +25,8 @@ public:
     void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override;
     void readAccumulation(std::vector<AccumPixel>& out) override;
     uint64_t raysTraced() const override;
-    double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) override;
+    using Backend::traceRays;
+    double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) override;
 
     size_t size() const { return backends_.size(); }
 

@@ -26,7 +26,7 @@ public:
     }
     void readAccumulation(std::vector<AccumPixel>& out) override { out = accum_; }
     uint64_t raysTraced() const override { return 10; }
-    double traceRays(const std::vector<RayQuery>&, bool, std::vector<float>&) override { return 0.0; }
+    double traceRays(const std::vector<RayQuery>&, RayQueryKind, std::vector<RayAnswer>&) override { return 0.0; }
 
 private:
     std::vector<PassRange>& calls_;

@@ -1,5 +1,5 @@
-// XXH64 against the reference implementation's values (libxxhash 0.8, XXH64(data, len, 0), computed once with
-// the system library), whole and in pieces.
+// The partial files' hash keeps its published values (XXH64(data, len, 0)), whole and in pieces: a file written
+// by one build must read in another.
 #include "render/xxhash64.h"
 
 #include <gtest/gtest.h>
