@@ -1,6 +1,7 @@
 // partial_merge_bench: what partial files cost (bytes, write and read seconds at 4K) and how `trazo merge`'s
-// time grows with the number of parts. Synthetic accumulations (every pixel's counts equal, as a headless
-// render's are), written to and read from --dir (the page cache, unless the files outgrow memory).
+// time grows with the number of parts (--plot: also as a picture). Synthetic accumulations (every pixel's
+// counts equal, as a headless render's are), written to and read from --dir (the page cache, unless the files
+// outgrow memory).
 //   partial_merge_bench [--dir DIR] [--width 256 --height 256] [--parts 1,4,16,64,256] [--skip-4k]
 #include <chrono>
 #include <cstdio>
@@ -11,6 +12,7 @@
 
 #include "render/merge.h"
 #include "render/partial_file.h"
+#include "support/plot.h"
 
 namespace {
 
@@ -81,7 +83,27 @@ bool bench4k(const std::string& dir) {
     return true;
 }
 
-bool benchMerge(const std::string& dir, uint32_t w, uint32_t h, const std::vector<int>& counts) {
+// Merge seconds against parts on log-log axes, with the line through the first point at one part's cost per
+// part (linear growth), so a departure from linear shows.
+bool plotMerge(const std::string& path, uint32_t w, uint32_t h, const std::vector<double>& parts,
+               const std::vector<double>& seconds) {
+    PlotSpec plot;
+    plot.title = "trazo merge: seconds against parts (" + std::to_string(w) + "x" + std::to_string(h) + " each)";
+    plot.xLabel = "parts";
+    plot.yLabel = "merge seconds";
+    PlotSeries measured{"measured (best of 2)", parts, seconds, Vec3(0.12f, 0.35f, 0.80f)};
+    PlotSeries linear{"linear from 1 part", parts, {}, Vec3(0.5f), true, false};
+    for (double p : parts) linear.y.push_back(seconds[0] / parts[0] * p);
+    plot.series = {measured, linear};
+    std::string error;
+    if (!writePlot(path, plot, error)) return fail(error);
+    std::printf("plot: %s\n", path.c_str());
+    return true;
+}
+
+bool benchMerge(const std::string& dir, uint32_t w, uint32_t h, const std::vector<int>& counts,
+                const std::string& plotPath) {
+    std::vector<double> partsDone, secondsTaken;
     std::printf("merge of P parts of %ux%u (%.2f MiB each):\n  parts  seconds  seconds/part  MB/s\n", w, h,
                 (double)(16 + (uint64_t)w * h * 48 + 512) / (1 << 20));
     int written = 0;
@@ -105,9 +127,11 @@ bool benchMerge(const std::string& dir, uint32_t w, uint32_t h, const std::vecto
         double bytes = 0;
         for (const std::string& p : some) bytes += (double)fs::file_size(p);
         std::printf("  %5d  %7.3f  %12.5f  %5.0f\n", parts, best, best / parts, bytes / best * 1e-6);
+        partsDone.push_back(parts);
+        secondsTaken.push_back(best);
     }
     for (const std::string& p : paths) fs::remove(p);
-    return true;
+    return plotPath.empty() || plotMerge(plotPath, w, h, partsDone, secondsTaken);
 }
 
 }  // namespace
@@ -117,6 +141,7 @@ int main(int argc, char** argv) {
     uint32_t width = 256, height = 256;
     std::vector<int> counts{1, 4, 16, 64, 256};
     bool skip4k = false;
+    std::string plotPath;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         auto next = [&] { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
@@ -124,6 +149,7 @@ int main(int argc, char** argv) {
         else if (a == "--width") width = (uint32_t)std::atoi(next().c_str());
         else if (a == "--height") height = (uint32_t)std::atoi(next().c_str());
         else if (a == "--skip-4k") skip4k = true;
+        else if (a == "--plot") plotPath = next();
         else if (a == "--parts") {
             counts.clear();
             const std::string list = next();
@@ -135,13 +161,13 @@ int main(int argc, char** argv) {
             }
         } else {
             std::fprintf(stderr, "usage: partial_merge_bench [--dir DIR] [--width W --height H] [--parts 1,4,16] "
-                                 "[--skip-4k]\n");
+                                 "[--skip-4k] [--plot FILE.png]\n");
             return 2;
         }
     }
     dir += "/trazo_partial_bench";
     fs::create_directories(dir);
-    const bool ok = (skip4k || bench4k(dir)) && benchMerge(dir, width, height, counts);
+    const bool ok = (skip4k || bench4k(dir)) && benchMerge(dir, width, height, counts, plotPath);
     fs::remove_all(dir);
     return ok ? 0 : 1;
 }
