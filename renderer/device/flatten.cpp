@@ -127,10 +127,9 @@ void buildTopLevel(SceneArrays& out, std::vector<ObjectId>& sources) {
 
 uint32_t traversalStackNeed(const SceneArrays& a) {
     uint32_t meshNeed = 0;
-    for (size_t i = 0; i < a.meshes.size(); ++i) {
-        const size_t end = i + 1 < a.meshes.size() ? a.meshes[i + 1].nodeOffset : a.meshNodes.size();
-        const uint32_t first = a.meshes[i].nodeOffset;
-        meshNeed = std::max(meshNeed, wideBvhStackNeed(a.meshNodes.data() + first, end - first));
+    for (uint32_t i = 0; i < a.meshes.size(); ++i) {
+        const WideBvhNode* nodes = a.meshNodes.data() + a.meshes[i].nodeOffset;
+        meshNeed = std::max(meshNeed, wideBvhStackNeed(nodes, meshNodeCount(a, i)));
     }
     return wideBvhStackNeed(a.topNodes.data(), a.topNodes.size()) + meshNeed;
 }

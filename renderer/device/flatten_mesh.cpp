@@ -299,10 +299,9 @@ uint32_t appendMesh(const MeshData& data, const Affine3& worldFromObject, SceneA
         });
 }
 
-bool appendObject(const Mesh& mesh, SceneArrays& out, uint32_t& index) {
-    if (!mesh.data || mesh.data->corners.empty()) return false;
-    index = appendMesh(*mesh.data, composeTransforms(mesh.transforms), out);
-    return true;
+size_t meshNodeCount(const SceneArrays& arrays, uint32_t shape) {
+    const size_t end = shape + 1 < arrays.meshes.size() ? arrays.meshes[shape + 1].nodeOffset : arrays.meshNodes.size();
+    return end - arrays.meshes[shape].nodeOffset;
 }
 
 }  // namespace trazo

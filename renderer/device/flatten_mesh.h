@@ -32,4 +32,7 @@ uint32_t appendMesh(const PreparedMesh& mesh, SceneArrays& out);
 // a large mesh, a third less memory at the peak and one copy fewer).
 uint32_t appendMesh(const MeshData& data, const Affine3& worldFromObject, SceneArrays& out);
 
+// The BVH nodes of MeshShape `shape`: meshes' nodes lie in meshNodes one mesh after another.
+size_t meshNodeCount(const SceneArrays& arrays, uint32_t shape);
+
 }  // namespace trazo

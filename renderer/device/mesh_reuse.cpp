@@ -32,14 +32,16 @@ void appendRange(std::vector<T>& to, const std::vector<T>& from, size_t first, s
 // Copies MeshShape `shape` of `from` (its nodes, triangles and corners) to the end of `to`; returns its index.
 uint32_t copyMesh(const SceneArrays& from, uint32_t shape, SceneArrays& to) {
     const MeshShape& m = from.meshes[shape];
-    const size_t nodeEnd = shape + 1 < from.meshes.size() ? from.meshes[shape + 1].nodeOffset : from.meshNodes.size();
     const MeshShape placed{(uint32_t)to.meshNodes.size(), (uint32_t)to.triangles.size(), m.triangleCount, m.hasUvs};
-    appendRange(to.meshNodes, from.meshNodes, m.nodeOffset, nodeEnd - m.nodeOffset);
+    appendRange(to.meshNodes, from.meshNodes, m.nodeOffset, meshNodeCount(from, shape));
     appendRange(to.triangles, from.triangles, m.triangleOffset, m.triangleCount);
     appendRange(to.triangleCorners, from.triangleCorners, m.triangleOffset, m.triangleCount);
     to.meshes.push_back(placed);
     return (uint32_t)to.meshes.size() - 1;
 }
+
+// A Mesh block with no triangles is not drawn.
+bool drawsTriangles(const std::shared_ptr<const MeshData>& data) { return data && !data->corners.empty(); }
 
 }  // namespace
 
@@ -57,7 +59,7 @@ void placeMeshes(const Scene& scene, FlattenResult* previous, FlattenResult& res
         FlattenedMesh& now = result.meshes[j];
         now.data = mesh.data;
         now.worldFromObject = composeTransforms(mesh.transforms);
-        if (!mesh.data || mesh.data->corners.empty()) continue;  // no triangles: not drawn (appendObject)
+        if (!drawsTriangles(mesh.data)) continue;
         if (previous) from[j] = findPrevious(*previous, j, now, taken);
         if (from[j] >= 0) taken[from[j]] = true;
         if (from[j] < 0 || previous->meshes[from[j]].shape != int32_t(nextShape)) sameOrder = false;
@@ -75,7 +77,7 @@ void placeMeshes(const Scene& scene, FlattenResult* previous, FlattenResult& res
     uint32_t shape = 0;
     for (size_t j = 0; j < count; ++j) {
         FlattenedMesh& now = result.meshes[j];
-        if (!now.data || now.data->corners.empty()) continue;
+        if (!drawsTriangles(now.data)) continue;
         if (sameOrder) {
             now.shape = int32_t(shape++);
             ++result.meshesReused;

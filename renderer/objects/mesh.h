@@ -113,8 +113,7 @@ inline Aabb objectBounds(const SceneView& scene, const MeshShape& mesh) {
     return wideNodeBounds(scene.meshNodes[mesh.nodeOffset]);
 }
 
-// Appends the mesh (its BVH nodes, triangles and corners, and its MeshShape to out.meshes); false for a Mesh
-// block with no triangles (device/flatten_mesh.cpp).
-bool appendObject(const Mesh& mesh, SceneArrays& out, uint32_t& index);
+// Meshes have no appendObject: flatten() places them first (placeMeshes, device/mesh_reuse.h), building each
+// one's BVH or reusing it from an earlier flatten.
 
 }  // namespace trazo
