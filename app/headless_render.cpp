@@ -255,10 +255,12 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     backend->readAccumulation(accum);  // into the capacity reserved above
     const ErrorEstimate estimate = estimateError(accum);
     stats.estimatedRelError = estimate.relError;
-    // Balanced where the halves hold equal strata: whole windows of 2·cycle passes from a window's start.
-    const uint64_t window = 2ull * limits.cyclePasses;
-    stats.estimateBalanced = estimate.available && splitsHalves(limits.cyclePasses) && done.first % window == 0 &&
-                             outcome.passes % window == 0;
+    stats.estimateBalanced = estimate.available && halvesBalanced(limits.cyclePasses, done);
+
+    // The output: the partial file, or the image resolved into the capacity reserved above. The backend's
+    // accumulation goes first: room for the writer's buffer.
+    std::string error;
+    const auto writeStart = std::chrono::steady_clock::now();
     if (partial) {
         PartialHeader header;
         header.fingerprint = fingerprint;
@@ -274,13 +276,10 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
         header.seconds = outcome.seconds;
         header.backend = describeBackend(*backend, "");
         backend.reset();
-        std::string error;
-        const auto writeStart = std::chrono::steady_clock::now();
         if (!writePartialFile(options.partialPath, header, accum, error)) {
             std::fprintf(stderr, "trazo: %s\n", error.c_str());
             return 1;
         }
-        stats.writeSeconds = secondsSince(writeStart);
         if (openEndedPartial)
             std::fprintf(stderr, "trazo: stopped by --time after passes %s: wrote them to %s\n",
                          formatRange(done).c_str(), options.partialPath.c_str());
@@ -289,23 +288,14 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
                          signalled ? ("stopped by signal " + std::to_string((int)stopSignal)).c_str()
                                    : "stopped by --time",
                          formatRange(done).c_str(), formatRange(range).c_str(), options.partialPath.c_str());
-        stats.peakRssMb = peakRssMegabytes();
-        if (!options.quiet) std::fputs(formatStatsSummary(stats).c_str(), stderr);
-        if (!options.statsPath.empty() && !writeTextFileAtomically(options.statsPath, formatStatsJson(stats), error)) {
+    } else {
+        backend.reset();
+        for (const AccumPixel& p : accum) image.push_back(p.estimate());  // resolveImage, into the reserved image
+        std::vector<AccumPixel>().swap(accum);
+        if (!writeImage(options.output, (int)stats.width, (int)stats.height, image, error)) {
             std::fprintf(stderr, "trazo: %s\n", error.c_str());
             return 1;
         }
-        return signalled ? 3 : 0;
-    }
-    backend.reset();  // its accumulation is no longer needed: room for the writer's buffer
-    for (const AccumPixel& p : accum) image.push_back(p.estimate());  // resolveImage, into the reserved image
-    std::vector<AccumPixel>().swap(accum);
-
-    std::string error;
-    const auto writeStart = std::chrono::steady_clock::now();
-    if (!writeImage(options.output, (int)stats.width, (int)stats.height, image, error)) {
-        std::fprintf(stderr, "trazo: %s\n", error.c_str());
-        return 1;
     }
     stats.writeSeconds = secondsSince(writeStart);
 
@@ -317,7 +307,7 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
             return 1;
         }
     }
-    return 0;
+    return signalled ? 3 : 0;  // a signal stops partial renders only
 }
 
 }  // namespace

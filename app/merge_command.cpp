@@ -97,10 +97,9 @@ int runMerge(const MergeCommandLine& options) {
                      formatRange(r).c_str(), passes, formatRanges(h.passes).c_str());
 
     const ErrorEstimate estimate = estimateError(result.accum);
-    // Unbiased where the halves hold equal strata: whole windows of 2·cycle passes from 0 (progressive_render.h).
-    const uint64_t window = 2ull * f.fullCycle;
-    const bool balanced = estimate.available && splitsHalves(f.fullCycle) && h.passes.size() == 1 &&
-                          h.passes[0].first == 0 && passes % window == 0;
+    // Unbiased where the halves hold equal strata: one range of whole windows from pass 0 (progressive_render.h).
+    const bool balanced = estimate.available && h.passes.size() == 1 && h.passes[0].first == 0 &&
+                          halvesBalanced(f.fullCycle, h.passes[0]);
 
     t0 = std::chrono::steady_clock::now();
     if (!options.partialPath.empty() && !writePartialFile(options.partialPath, h, result.accum, error)) {

@@ -19,6 +19,11 @@ uint64_t roundUp(uint64_t v, uint64_t step) { return (v + step - 1) / step * ste
 
 bool splitsHalves(uint32_t cyclePasses) { return cyclePasses > 0 && cyclePasses < kMaxCyclePasses; }
 
+bool halvesBalanced(uint32_t cyclePasses, PassRange range) {
+    const uint64_t window = 2ull * cyclePasses;
+    return splitsHalves(cyclePasses) && range.first % window == 0 && range.count() % window == 0;
+}
+
 uint32_t halfBlockPasses(uint32_t cyclePasses) {
     return splitsHalves(cyclePasses) ? cyclePasses & (~cyclePasses + 1u) : 0u;  // lowest set bit
 }

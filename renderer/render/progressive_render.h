@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "backends/backend.h"
+#include "render/pass_range.h"
 #include "render/strata_plan.h"
 
 namespace trazo {
@@ -27,6 +28,9 @@ namespace trazo {
 // error that re-pairing removes over later windows; with one grid (or independent ones) that part is 0.
 bool splitsHalves(uint32_t cyclePasses);
 uint32_t halfBlockPasses(uint32_t cyclePasses);  // FrameParams::halfBlock; 0 when there are no halves
+// Whether passes `range` hold two equally stratified halves, so their error estimate is unbiased: whole
+// windows of 2·cyclePasses passes, starting at a window's start.
+bool halvesBalanced(uint32_t cyclePasses, PassRange range);
 constexpr uint32_t kMaxProgressivePasses = 1u << 30;
 
 struct RenderLimits {
