@@ -58,31 +58,25 @@ void ViewerSession::replaceBackend(std::unique_ptr<Backend> backend) {
 
 void ViewerSession::replaceScene(Scene scene, bool keepSize) {
     waitIdle();
-    const auto t0 = std::chrono::steady_clock::now();
-    FlattenResult next = flatten(scene);
-    const double flattenSeconds = secondsSince(t0);
-    const auto t1 = std::chrono::steady_clock::now();
-    try {
-        backend_->upload(next.arrays, kAllArrays);
-    } catch (...) {
-        uploadAll_ = true;  // the backend may hold part of either scene: the next edit sends everything again
-        dirty_ |= kDirtyScene;
-        throw;
-    }
-    lastUpload_ = UploadReport{kAllArrays, next.meshesBuilt, 0, flattenSeconds, 0.0, secondsSince(t1)};
-    scene_ = std::move(scene);
-    fileScene_ = scene_;
-    flat_ = std::move(next);
-    uploadAll_ = false;
-    cyclePasses_ = fullCyclePasses(flat_.arrays, StrataBlocks::ones());
+    std::swap(scene_, scene);  // `scene` keeps the old one until the new one is uploaded
+    const uint32_t oldWidth = requestedWidth_, oldHeight = requestedHeight_;
     if (!keepSize) {
         requestedWidth_ = uint32_t(std::max(scene_.settings.renderWidth, 1));
         requestedHeight_ = uint32_t(std::max(scene_.settings.renderHeight, 1));
     }
-    dirty_ = kDirtySize | kDirtyCamera;  // the scene is uploaded: reallocate and restart
-    const UploadReport report = lastUpload_;
-    applyEdits();
-    lastUpload_ = report;
+    uploadAll_ = true;  // nothing of the old scene is reused
+    dirty_ |= kDirtyScene | kDirtySize | kDirtyCamera;
+    try {
+        applyEdits();
+    } catch (...) {
+        std::swap(scene_, scene);
+        requestedWidth_ = oldWidth;
+        requestedHeight_ = oldHeight;
+        uploadAll_ = true;  // the backend may hold part of either scene: the next edit sends everything again
+        dirty_ |= kDirtyScene;
+        throw;
+    }
+    fileScene_ = scene_;
 }
 
 bool ViewerSession::busy() {
