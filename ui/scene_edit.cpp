@@ -2,7 +2,6 @@
 #include "scene_edit.h"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <filesystem>
 
@@ -15,13 +14,12 @@
 #include "objects/sphere.h"
 #include "scene/csg_reader.h"
 #include "scene/obj_reader.h"
+#include "scene/transform_checks.h"
 
 namespace trazo {
 namespace {
 
 using Step = TransformStep::Kind;
-
-constexpr double kMaxMeshExtent = 1e9;  // as the scene reader's (docs/LIMITS.md, Geometry)
 
 // Calls f with the scene's vector of `kind` (Scene::spheres, ..., Scene::areaLights).
 template <class SceneRef, class F>
@@ -41,24 +39,6 @@ template <class T>
 constexpr bool kHasTransforms = requires(T t) { t.transforms; };
 template <class T>
 constexpr bool kHasMaterial = requires(T t) { t.material; };
-
-// The steps' world box of an object-space box (its 8 corners mapped).
-Aabb transformedBox(const Aabb& object, const std::vector<TransformStep>& steps) {
-    if (object.empty()) return object;
-    const Affine3 m = composeTransforms(steps);
-    Aabb world;
-    for (int c = 0; c < 8; ++c)
-        world.grow(m.applyToPoint(Vec3((c & 1) ? object.max.x : object.min.x, (c & 2) ? object.max.y : object.min.y,
-                                       (c & 4) ? object.max.z : object.min.z)));
-    return world;
-}
-
-Aabb meshObjectBounds(const MeshData* data) {
-    Aabb b;
-    if (data)
-        for (const Vec3& p : data->positions) b.grow(p);
-    return b;
-}
 
 // The tree's bounds without the CSG block's own transforms (flattenCsg's root box).
 Aabb csgObjectBounds(const std::shared_ptr<const CsgTree>& tree) {
@@ -82,7 +62,7 @@ Aabb boundsOf(const Box& b) {
     const Affine3 worldFromObject = composeTransforms(b.transforms);
     return objectBounds(SceneView{}, BoxShape{inverse(worldFromObject), worldFromObject});
 }
-Aabb boundsOf(const Mesh& m) { return transformedBox(meshObjectBounds(m.data.get()), m.transforms); }
+Aabb boundsOf(const Mesh& m) { return m.data ? transformedBox(meshObjectBounds(*m.data), m.transforms) : Aabb{}; }
 Aabb boundsOf(const Csg& c) { return transformedBox(csgObjectBounds(c.tree), c.transforms); }
 Aabb boundsOf(const PointLight& l) { return Aabb{l.position, l.position}; }
 Aabb boundsOf(const AreaLight& l) {
@@ -123,9 +103,8 @@ std::shared_ptr<const MeshData> loadMeshData(const Scene& scene, const std::stri
         if (m.data && m.source == path) return m.data;
     std::shared_ptr<const MeshData> data = readObjFile(path, diags);
     if (!data) return nullptr;
-    if (!(double(maxComponent(meshObjectBounds(data.get()).extent())) <= kMaxMeshExtent)) {
-        diags.error({path, 0, 0}, "the mesh spans more than 1e9, where its triangles' normals no longer square "
-                                  "inside single precision");
+    if (const std::string problem = meshExtentProblem(*data, {}); !problem.empty()) {
+        diags.error({path, 0, 0}, "the mesh " + problem);
         return nullptr;
     }
     return data;
@@ -365,23 +344,11 @@ bool moveTransformStep(std::vector<TransformStep>& steps, size_t i, int directio
 }
 
 std::string transformProblem(const std::vector<TransformStep>& steps, ObjectId::Kind kind, const MeshData* mesh) {
-    if (mesh && kind == ObjectId::Kind::Mesh) {
-        const Vec3 extent = transformedBox(meshObjectBounds(mesh), steps).extent();
-        if (!(double(maxComponent(extent)) <= kMaxMeshExtent))
-            return "the mesh would span more than 1e9, where its triangles' normals no longer square inside single "
-                   "precision";
-    }
-    if (steps.empty()) return {};
-    const Affine3 m = composeTransforms(steps);
-    const Affine3 inv = inverse(m);
-    bool finite = isFinite(m.translation) && isFinite(inv.translation);
-    for (int i = 0; i < 3; ++i) finite = finite && isFinite(m.row[i]) && isFinite(inv.row[i]);
-    if (!finite) return "the transforms compose to a map single precision cannot hold or invert";
-    if (kind == ObjectId::Kind::Box) {
-        for (int i = 0; i < 3; ++i)
-            if (!(dot(inv.row[i], inv.row[i]) >= 2.0f * FLT_MIN))
-                return "the transforms scale an axis by more than about 6e18, where the box's face normals leave "
-                       "single precision";
+    // The reader's checks, in its order (scene/transform_checks.h).
+    if (std::string problem = invertibleProblem(steps); !problem.empty()) return problem;
+    if (kind == ObjectId::Kind::Box) return boxNormalsProblem(steps);
+    if (kind == ObjectId::Kind::Mesh && mesh) {
+        if (std::string problem = meshExtentProblem(*mesh, steps); !problem.empty()) return "the mesh " + problem;
     }
     return {};
 }

@@ -3,14 +3,11 @@
 #include "scene/scene_reader.h"
 
 #include <algorithm>
-#include <cfloat>
-#include <cstdio>
 #include <map>
 #include <memory>
 #include <optional>
 #include <vector>
 
-#include "core/aabb.h"
 #include "io/text_file.h"
 #include "scene/block_lexer.h"
 #include "scene/block_table.h"
@@ -18,11 +15,11 @@
 #include "scene/obj_reader.h"
 #include "scene/source_file.h"
 #include "scene/texture_reader.h"
+#include "scene/transform_checks.h"
 
 namespace trazo {
 namespace {
 
-constexpr double kMaxMeshExtent = 1e9;  // docs/LIMITS.md, Geometry
 
 // Where a texture or material name is first declared: used to tell "declared later" from "never declared".
 struct Declaration {
@@ -169,55 +166,21 @@ private:
         return d;
     }
 
-    // Each Scale is non-zero as written, but a value below 1e-45 rounds to 0 in float and scales multiply:
-    // a composed map that float cannot invert (or hold) would reach the renderer as NaN.
+    // The transform checks (scene/transform_checks.h) as errors at the block's line.
     bool checkInvertible(const std::vector<TransformStep>& steps, const Block& block) {
-        if (steps.empty()) return true;
-        const Affine3 m = composeTransforms(steps);
-        const Affine3 inv = inverse(m);
-        bool finite = isFinite(m.translation) && isFinite(inv.translation);
-        for (int i = 0; i < 3; ++i) finite = finite && isFinite(m.row[i]) && isFinite(inv.row[i]);
-        if (!finite) {
-            diags_.error(block.where, block.identifier + ": its transforms compose to a map single precision "
-                                      "cannot hold or invert (scales multiply past float's range, about 1e±38)");
-        }
-        return finite;
+        const std::string problem = invertibleProblem(steps);
+        if (!problem.empty()) diags_.error(block.where, block.identifier + ": " + problem);
+        return problem.empty();
     }
 
-    // A box's face normal is normalize(row of objectFromWorld): that row's squared length, 1/scale², must be
-    // a normal float (with an ulp's margin for the device's fused arithmetic), or the normal is inf or NaN.
     void checkBoxNormals(const std::vector<TransformStep>& steps, const Block& block) {
-        const Affine3 inv = inverse(composeTransforms(steps));
-        for (int i = 0; i < 3; ++i) {
-            if (!(dot(inv.row[i], inv.row[i]) >= 2.0f * FLT_MIN)) {
-                diags_.error(block.where, block.identifier + ": its transforms scale an axis by more than about "
-                                          "6e18, where its face normals (of squared length 1/scale²) leave "
-                                          "single precision");
-                return;
-            }
-        }
+        const std::string problem = boxNormalsProblem(steps);
+        if (!problem.empty()) diags_.error(block.where, block.identifier + ": " + problem);
     }
 
-    // A mesh's kernel normal is cross(p1 − p0, p2 − p0), squared to normalise: it overflows float for triangles
-    // beyond about 2.4e9 a side. Measured on the transformed bounding box (a rotation may widen it by √3).
     void checkMeshExtent(const Mesh& mesh, const Block& block) {
-        Aabb object;
-        for (const Vec3& p : mesh.data->positions) object.grow(p);
-        if (object.empty()) return;
-        const Affine3 m = composeTransforms(mesh.transforms);
-        Aabb world;
-        for (int c = 0; c < 8; ++c)
-            world.grow(m.applyToPoint(Vec3((c & 1) ? object.max.x : object.min.x, (c & 2) ? object.max.y : object.min.y,
-                                           (c & 4) ? object.max.z : object.min.z)));
-        const double extent = std::max({double(world.max.x) - world.min.x, double(world.max.y) - world.min.y,
-                                        double(world.max.z) - world.min.z});
-        if (!(extent <= kMaxMeshExtent)) {
-            char spans[32];
-            std::snprintf(spans, sizeof spans, "%.3g", extent);
-            diags_.error(block.where, block.identifier + ": '" + mesh.source + "' spans " + spans +
-                                      " after its transforms; a mesh may span at most 1e9, where its triangles' "
-                                      "normals still square inside single precision");
-        }
+        const std::string problem = meshExtentProblem(*mesh.data, mesh.transforms);
+        if (!problem.empty()) diags_.error(block.where, block.identifier + ": '" + mesh.source + "' " + problem);
     }
 
     // An object kind's block: its table's parameters, then what the kind checks or loads beyond them.
