@@ -30,17 +30,15 @@ void SceneEditor::cameraMoved(const Camera& before, const std::string& kind) {
 
 DirtyFlags SceneEditor::undo() {
     if (move_.active()) return cancelMove();
-    const DirtyFlags changed = history_.undo(session_.scene());
-    objects_.selection = validSelection(session_.scene(), objects_.selection);
-    selector_.invalidate();
-    reportSelection();
-    cameraGesture_ = 0;
-    return changed;
+    return historyStepped(history_.undo(session_.scene()));
 }
 
 DirtyFlags SceneEditor::redo() {
     if (move_.active()) return kDirtyNone;
-    const DirtyFlags changed = history_.redo(session_.scene());
+    return historyStepped(history_.redo(session_.scene()));
+}
+
+DirtyFlags SceneEditor::historyStepped(DirtyFlags changed) {
     objects_.selection = validSelection(session_.scene(), objects_.selection);
     selector_.invalidate();
     reportSelection();

@@ -78,6 +78,9 @@ public:
     void reportSelection() { selector_.report(session_.scene(), objects_.selection); }
 
 private:
+    // After an undo or redo: the selection kept valid and its outline redrawn, the camera's gesture ended.
+    DirtyFlags historyStepped(DirtyFlags changed);
+
     ViewerSession& session_;
     std::string scenePath_;
     EditHistory history_;

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "camera_controller.h"
 #include "display.h"
@@ -158,6 +159,11 @@ private:
         return view_.toImage(c.x * framebufferScale_, c.y * framebufferScale_, area_, session_.renderWidth(),
                              session_.renderHeight());
     }
+    // The same for a point that must be on the image (a click); none beside it.
+    std::optional<ImagePoint> onImage(CursorPoint c) const {
+        return view_.imagePoint(c.x * framebufferScale_, c.y * framebufferScale_, area_, session_.renderWidth(),
+                                session_.renderHeight());
+    }
 
     MenuInfo menuInfo() const {
         MenuInfo info;
@@ -253,15 +259,10 @@ private:
         if (e.zoom != 0)
             view_.zoomBy(std::pow(kZoomStep, e.zoom), e.zoomAt.x * framebufferScale_, e.zoomAt.y * framebufferScale_,
                          area_, session_.renderWidth(), session_.renderHeight());
-        for (const CursorPoint& c : e.clicks) {
-            if (auto p = view_.imagePoint(c.x * framebufferScale_, c.y * framebufferScale_, area_,
-                                          session_.renderWidth(), session_.renderHeight()))
-                editor_.click(*p);
-        }
+        for (const CursorPoint& c : e.clicks)
+            if (auto p = onImage(c)) editor_.click(*p);
         if (e.moveStarted) {  // Alt+drag takes the object under the cursor, then moves it
-            if (auto p = view_.imagePoint(e.moveStart.x * framebufferScale_, e.moveStart.y * framebufferScale_, area_,
-                                          session_.renderWidth(), session_.renderHeight()))
-                editor_.click(*p);
+            if (auto p = onImage(e.moveStart)) editor_.click(*p);
             editor_.beginMove(toImage(e.moveStart));
         }
         if (editor_.moving() && editor_.updateMove(toImage(window_.cursor()), e.scroll)) {
