@@ -39,6 +39,19 @@ bool parseDevices(const std::string& text, CommandLine::DeviceList& out, std::st
     return true;
 }
 
+// --passes A:B (none when not given) into `out`; false after printing why, after `prefix` ("trazo: merge").
+bool readPassesOption(const std::string& text, const char* prefix, std::optional<PassRange>& out) {
+    if (text.empty()) return true;
+    PassRange range;
+    std::string why;
+    if (!parsePassRange(text, range, why, kMaxProgressivePasses)) {
+        std::fprintf(stderr, "%s: --passes %s: %s\n", prefix, text.c_str(), why.c_str());
+        return false;
+    }
+    out = range;
+    return true;
+}
+
 }  // namespace
 
 std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
@@ -111,15 +124,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         }
         out.blocks = parsed;
     }
-    if (!passes.empty()) {
-        PassRange range;
-        std::string why;
-        if (!parsePassRange(passes, range, why, kMaxProgressivePasses)) {
-            std::fprintf(stderr, "trazo: --passes %s: %s\n", passes.c_str(), why.c_str());
-            return 2;
-        }
-        out.passes = range;
-    }
+    if (!readPassesOption(passes, "trazo", out.passes)) return 2;
     if (!devices.empty()) {
         CommandLine::DeviceList list;
         std::string why;
@@ -192,15 +197,7 @@ std::optional<int> parseMergeCommandLine(int argc, char** argv, MergeCommandLine
         app.exit(e);
         return 2;
     }
-    if (!passes.empty()) {
-        PassRange range;
-        std::string why;
-        if (!parsePassRange(passes, range, why, kMaxProgressivePasses)) {
-            std::fprintf(stderr, "trazo: merge: --passes %s: %s\n", passes.c_str(), why.c_str());
-            return 2;
-        }
-        out.passes = range;
-    }
+    if (!readPassesOption(passes, "trazo: merge", out.passes)) return 2;
     if (out.output.empty() && out.partialPath.empty()) {
         std::fputs("trazo: merge: nothing to write: give -o IMAGE, --partial FILE or both\n", stderr);
         return 2;
