@@ -38,29 +38,26 @@ struct MergeTimes {
 std::string formatMergeJson(const MergeResult& r, double relError, bool balanced, const MergeTimes& times) {
     const PartialHeader& h = r.header;
     const Fingerprint& f = h.fingerprint;
-    std::string j = "{\n";
-    auto add = [&](const char* key, const std::string& value, bool last = false) {
-        j += std::string("  \"") + key + "\": " + value + (last ? "\n" : ",\n");
-    };
-    add("scene", jsonString(f.scenePath));
-    add("parts", std::to_string(h.parts));
-    add("spp", std::to_string(passCount(h.passes)));
-    add("passes", jsonString(formatRanges(h.passes)));
-    add("missing", jsonString(formatRanges(r.missing)));
-    add("render_s", jsonNumber(h.seconds));
-    add("merge_s", jsonNumber(times.merge));
-    add("write_s", jsonNumber(times.write));
-    add("rays", std::to_string(h.rays));
-    add("mrays_per_s", jsonNumber(h.seconds > 0 ? h.rays / h.seconds * 1e-6 : 0.0));
-    add("backend", jsonString(h.backend));
-    add("width", std::to_string(f.width));
-    add("height", std::to_string(f.height));
-    add("seed", std::to_string(f.seed));
-    add("blocks", jsonString(f.blocks));
-    add("full_cycle_spp", std::to_string(f.fullCycle));
-    add("estimated_rel_error", jsonNumber(relError));
-    add("estimate_balanced", balanced ? "true" : "false", true);
-    return j + "}\n";
+    JsonObject j;
+    j.add("scene", jsonString(f.scenePath));
+    j.add("parts", std::to_string(h.parts));
+    j.add("spp", std::to_string(passCount(h.passes)));
+    j.add("passes", jsonString(formatRanges(h.passes)));
+    j.add("missing", jsonString(formatRanges(r.missing)));
+    j.add("render_s", jsonNumber(h.seconds));
+    j.add("merge_s", jsonNumber(times.merge));
+    j.add("write_s", jsonNumber(times.write));
+    j.add("rays", std::to_string(h.rays));
+    j.add("mrays_per_s", jsonNumber(h.seconds > 0 ? h.rays / h.seconds * 1e-6 : 0.0));
+    j.add("backend", jsonString(h.backend));
+    j.add("width", std::to_string(f.width));
+    j.add("height", std::to_string(f.height));
+    j.add("seed", std::to_string(f.seed));
+    j.add("blocks", jsonString(f.blocks));
+    j.add("full_cycle_spp", std::to_string(f.fullCycle));
+    j.add("estimated_rel_error", jsonNumber(relError));
+    j.add("estimate_balanced", balanced ? "true" : "false");
+    return j.text();
 }
 
 }  // namespace

@@ -51,36 +51,38 @@ std::string formatStatsSummary(const RenderStats& s) {
     return out + "\n";
 }
 
+void JsonObject::add(const char* key, const std::string& value) {
+    if (!body_.empty()) body_ += ",\n";
+    body_ += std::string("  \"") + key + "\": " + value;
+}
+
 std::string formatStatsJson(const RenderStats& s) {
-    std::string j = "{\n";
-    auto add = [&](const char* key, const std::string& value, bool last = false) {
-        j += std::string("  \"") + key + "\": " + value + (last ? "\n" : ",\n");
-    };
-    add("scene", jsonString(s.scene));
-    add("parse_s", jsonNumber(s.parseSeconds));
-    add("read_s", jsonNumber(s.readSeconds));
-    add("build_s", jsonNumber(s.buildSeconds));
-    add("upload_s", jsonNumber(s.uploadSeconds));
-    add("render_s", jsonNumber(s.renderSeconds));
-    add("write_s", jsonNumber(s.writeSeconds));
-    add("spp", std::to_string(s.spp));
-    add("full_cycle_spp", std::to_string(s.fullCycle));
-    add("rays", std::to_string(s.rays));
-    add("mrays_per_s", jsonNumber(s.mraysPerSecond()));
-    add("backend", jsonString(s.backend));
-    add("device", jsonString(s.device));
-    add("width", std::to_string(s.width));
-    add("height", std::to_string(s.height));
-    add("seed", std::to_string(s.seed));
-    add("features", jsonString(s.features));
-    add("fixed_grid", s.fixedGrid ? "true" : "false");
-    add("blocks", jsonString(s.blocks));
-    add("estimated_rel_error", jsonNumber(s.estimatedRelError));
-    add("estimate_balanced", s.estimateBalanced ? "true" : "false");
-    add("target_error", jsonNumber(s.targetError));
-    add("reached_target", s.reachedTarget ? "true" : "false");
-    add("peak_rss_mb", jsonNumber(s.peakRssMb), true);
-    return j + "}\n";
+    JsonObject j;
+    j.add("scene", jsonString(s.scene));
+    j.add("parse_s", jsonNumber(s.parseSeconds));
+    j.add("read_s", jsonNumber(s.readSeconds));
+    j.add("build_s", jsonNumber(s.buildSeconds));
+    j.add("upload_s", jsonNumber(s.uploadSeconds));
+    j.add("render_s", jsonNumber(s.renderSeconds));
+    j.add("write_s", jsonNumber(s.writeSeconds));
+    j.add("spp", std::to_string(s.spp));
+    j.add("full_cycle_spp", std::to_string(s.fullCycle));
+    j.add("rays", std::to_string(s.rays));
+    j.add("mrays_per_s", jsonNumber(s.mraysPerSecond()));
+    j.add("backend", jsonString(s.backend));
+    j.add("device", jsonString(s.device));
+    j.add("width", std::to_string(s.width));
+    j.add("height", std::to_string(s.height));
+    j.add("seed", std::to_string(s.seed));
+    j.add("features", jsonString(s.features));
+    j.add("fixed_grid", s.fixedGrid ? "true" : "false");
+    j.add("blocks", jsonString(s.blocks));
+    j.add("estimated_rel_error", jsonNumber(s.estimatedRelError));
+    j.add("estimate_balanced", s.estimateBalanced ? "true" : "false");
+    j.add("target_error", jsonNumber(s.targetError));
+    j.add("reached_target", s.reachedTarget ? "true" : "false");
+    j.add("peak_rss_mb", jsonNumber(s.peakRssMb));
+    return j.text();
 }
 
 }  // namespace trazo

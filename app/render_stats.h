@@ -38,4 +38,14 @@ std::string formatStatsJson(const RenderStats& s);
 std::string jsonString(const std::string& s);
 std::string jsonNumber(double v);
 
+// A stats file's JSON object, one `"key": value` a line, in the order added.
+class JsonObject {
+public:
+    void add(const char* key, const std::string& value);
+    std::string text() const { return "{\n" + body_ + "\n}\n"; }
+
+private:
+    std::string body_;
+};
+
 }  // namespace trazo
