@@ -17,28 +17,9 @@
 # Usage: viewer_editor_test.sh TRAZO. Exit 77 (CTest SKIP_RETURN_CODE) without xvfb-run/xdotool/xwd/python3.
 set -u
 trazo=$(realpath "$1")
-if [ -z "${TRAZO_INSIDE_XVFB:-}" ]; then
-    for tool in xvfb-run xauth Xvfb xdotool xwd python3 cmp; do
-        if ! command -v "$tool" >/dev/null 2>&1; then
-            echo "SKIP: $tool is not installed (apt-get install xvfb xauth xdotool x11-apps python3)"
-            exit 77
-        fi
-    done
-    TRAZO_INSIDE_XVFB=1 exec timeout 170 xvfb-run -a -s "-screen 0 800x600x24" bash "$0" "$@"
-fi
-
-work=$(mktemp -d)
-pid=
-cleanup() {
-    [ -n "$pid" ] && kill "$pid" 2>/dev/null
-    rm -rf "$work"
-}
-trap cleanup EXIT
-fail() {
-    echo "FAIL: $*"
-    echo "--- viewer log"; cat "$work/viewer.log" 2>/dev/null
-    exit 1
-}
+# shellcheck source=support/xvfb_viewer.sh
+source "$(dirname "$0")/support/xvfb_viewer.sh"
+xvfb_viewer_start 170 "apt-get install xvfb xauth xdotool x11-apps python3" xdotool xwd python3 cmp -- "$0" "$@"
 log_has() { grep -q -- "$1" "$work/viewer.log"; }
 wait_log() {  # up to 20 s (or $3 tenths) for a line matching $1 (grep -E), counted from line $2 of the log on
     for _ in $(seq "${3:-200}"); do

@@ -7,28 +7,9 @@
 set -u
 trazo=$(realpath "$1")
 scenes=$(realpath "$2")
-if [ -z "${TRAZO_INSIDE_XVFB:-}" ]; then
-    for tool in xvfb-run xauth Xvfb xdotool cmp; do
-        if ! command -v "$tool" >/dev/null 2>&1; then
-            echo "SKIP: $tool is not installed (apt-get install xvfb xauth xdotool; scripts/setup.sh does)"
-            exit 77
-        fi
-    done
-    TRAZO_INSIDE_XVFB=1 exec timeout 150 xvfb-run -a -s "-screen 0 800x600x24" bash "$0" "$@"
-fi
-
-work=$(mktemp -d)
-pid=
-cleanup() {
-    [ -n "$pid" ] && kill "$pid" 2>/dev/null
-    rm -rf "$work"
-}
-trap cleanup EXIT
-fail() {
-    echo "FAIL: $*"
-    echo "--- viewer log"; cat "$work/viewer.log" 2>/dev/null
-    exit 1
-}
+# shellcheck source=support/xvfb_viewer.sh
+source "$(dirname "$0")/support/xvfb_viewer.sh"
+xvfb_viewer_start 150 "apt-get install xvfb xauth xdotool; scripts/setup.sh does" xdotool cmp -- "$0" "$@"
 count_shots() { ls "$work"/trazo-*.png 2>/dev/null | wc -l; }
 wait_for_shots() {  # up to 20 s for $1 screenshots
     for _ in $(seq 200); do
