@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -44,10 +45,23 @@ public:
     virtual void resize(uint32_t width, uint32_t height) = 0;
     // Clears the sums and counts (no reallocation).
     virtual void reset() = 0;
-    // Adds passes [firstPass, firstPass + passCount) to every pixel; blocks until done.
+    // Adds passes [firstPass, firstPass + passCount) to every pixel of the accumulation frame.lattice names
+    // (the image's, or the probe's); blocks until done.
     virtual void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) = 0;
     // Copies the accumulation buffer (row 0 = top) to the host.
     virtual void readAccumulation(std::vector<AccumPixel>& out) = 0;
+    // The error probe (render/error_probe.h): a second accumulation, lattice.width × lattice.height pixels of
+    // the image rendered again with an independent seed. resizeProbe (re)allocates and clears it; reset()
+    // clears it too. A backend without one (hasProbe() false) leaves the estimate to the image's halves.
+    virtual bool hasProbe() const { return false; }
+    virtual void resizeProbe(const PixelLattice& lattice) {
+        (void)lattice;
+        throw std::logic_error("the " + name() + " backend has no error probe");
+    }
+    virtual void readProbe(std::vector<AccumPixel>& out) {
+        (void)out;
+        throw std::logic_error("the " + name() + " backend has no error probe");
+    }
     // Rays traced since the last reset.
     virtual uint64_t raysTraced() const = 0;
     // Answers every query against the uploaded scene (answerRayQuery: benchmarks, agreement tests, the
@@ -71,6 +85,16 @@ public:
     // storage is specified again, which a registered buffer must not see.
     virtual void releaseGlBuffer() {}
 };
+
+// Refuses a pass whose accumulation (frame.lattice) is not the one allocated: the image's (resize) or the
+// probe's (resizeProbe). A kernel would otherwise write out of bounds.
+inline void checkAccumulation(const FrameParams& frame, uint32_t width, uint32_t height, const PixelLattice& probe) {
+    const bool matches = frame.lattice.isProbe()
+                             ? frame.lattice.width == probe.width && frame.lattice.height == probe.height &&
+                                   probe.width != 0 && frame.lattice.stride == probe.stride
+                             : frame.camera.width == width && frame.camera.height == height;
+    if (!matches) throw std::logic_error("renderPasses: the frame's pixels differ from the allocated accumulation");
+}
 
 inline double Backend::traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) {
     std::vector<RayAnswer> answers;

@@ -9,6 +9,16 @@
 
 namespace trazo {
 
+// The pixels a pass renders, and where it adds them. The image (stride 0): every pixel, accumulation pixel =
+// image pixel. The error probe (render/error_probe.h): accumulation pixel (i, j) of a width × height buffer is
+// image pixel (offsetX + stride·i, offsetY + stride·j), rendered with the probe's own seed.
+struct PixelLattice {
+    uint32_t stride = 0;
+    uint32_t offsetX = 0, offsetY = 0;
+    uint32_t width = 0, height = 0;
+    TRAZO_HD bool isProbe() const { return stride != 0; }
+};
+
 struct FrameParams {
     CameraFrame camera;
     uint32_t seed = 0;
@@ -31,6 +41,12 @@ struct FrameParams {
         const uint32_t window = strataWindow != 0 ? pass / strataWindow : 0u;
         return window == 0 ? seed : hashCombine(seed, window);
     }
+    PixelLattice lattice{};
+    // The accumulation a pass adds to, and the image pixel each of its pixels is.
+    TRAZO_HD uint32_t accumWidth() const { return lattice.isProbe() ? lattice.width : camera.width; }
+    TRAZO_HD uint32_t accumHeight() const { return lattice.isProbe() ? lattice.height : camera.height; }
+    TRAZO_HD uint32_t pixelX(uint32_t i) const { return lattice.isProbe() ? lattice.offsetX + lattice.stride * i : i; }
+    TRAZO_HD uint32_t pixelY(uint32_t j) const { return lattice.isProbe() ? lattice.offsetY + lattice.stride * j : j; }
 };
 
 }  // namespace trazo

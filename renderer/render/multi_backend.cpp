@@ -72,12 +72,26 @@ void MultiBackend::renderPasses(const FrameParams& frame, uint32_t firstPass, ui
     });
 }
 
-void MultiBackend::readAccumulation(std::vector<AccumPixel>& out) {
+void MultiBackend::readSum(void (Backend::*read)(std::vector<AccumPixel>&), std::vector<AccumPixel>& out) {
     std::vector<std::vector<AccumPixel>> parts(backends_.size());
-    forEach([&](size_t i) { backends_[i]->readAccumulation(parts[i]); });
+    forEach([&](size_t i) { (backends_[i].get()->*read)(parts[i]); });
     out.assign(parts[0].size(), AccumPixel{});
     for (const std::vector<AccumPixel>& part : parts) addAccumulation(out, part);  // in device order
 }
+
+void MultiBackend::readAccumulation(std::vector<AccumPixel>& out) { readSum(&Backend::readAccumulation, out); }
+
+bool MultiBackend::hasProbe() const {
+    for (const auto& b : backends_)
+        if (!b->hasProbe()) return false;
+    return true;
+}
+
+void MultiBackend::resizeProbe(const PixelLattice& lattice) {
+    forEach([&](size_t i) { backends_[i]->resizeProbe(lattice); });
+}
+
+void MultiBackend::readProbe(std::vector<AccumPixel>& out) { readSum(&Backend::readProbe, out); }
 
 uint64_t MultiBackend::raysTraced() const {
     uint64_t rays = 0;

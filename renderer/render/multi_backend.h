@@ -1,6 +1,7 @@
 // MultiBackend: one Backend over several (one per CUDA device, `--devices`), each driven from its own thread.
 // renderPasses splits the pass range into contiguous sub-ranges, one per backend; readAccumulation adds their
-// accumulations in backend order with the sum `trazo merge` uses (addAccumulation). Host code.
+// accumulations in backend order with the sum `trazo merge` uses (addAccumulation); the error probe likewise.
+// Host code.
 #pragma once
 
 #include <functional>
@@ -24,6 +25,10 @@ public:
     void reset() override;
     void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override;
     void readAccumulation(std::vector<AccumPixel>& out) override;
+    // The probe as the image: every backend holds one, passes split the same way, read as their sum.
+    bool hasProbe() const override;
+    void resizeProbe(const PixelLattice& lattice) override;
+    void readProbe(std::vector<AccumPixel>& out) override;
     uint64_t raysTraced() const override;
     using Backend::traceRays;
     double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) override;
@@ -33,6 +38,8 @@ public:
 private:
     // Runs f(i) for every backend, each on its own thread; rethrows the first exception once all are done.
     void forEach(const std::function<void(size_t)>& f);
+    // Reads every backend's accumulation (or probe) and adds them in backend order.
+    void readSum(void (Backend::*read)(std::vector<AccumPixel>&), std::vector<AccumPixel>& out);
 
     std::vector<std::unique_ptr<Backend>> backends_;
 };

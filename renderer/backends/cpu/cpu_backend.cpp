@@ -19,7 +19,8 @@ struct Tile {
     uint32_t x0, y0, x1, y1;
 };
 
-// Passes inside the tile keep its data in cache; per pixel they still add in pass order. Returns rays.
+// Passes inside the tile keep its data in cache; per pixel they still add in pass order. The tile is in the
+// accumulation's pixels (frame.lattice). Returns rays.
 template <FeatureMask F>
 uint64_t renderTilePasses(const SceneView& scene, const FrameParams& frame, Tile tile, uint32_t firstPass,
                           uint32_t passCount, AccumPixel* accum) {
@@ -28,8 +29,8 @@ uint64_t renderTilePasses(const SceneView& scene, const FrameParams& frame, Tile
         for (uint32_t y = tile.y0; y < tile.y1; ++y) {
             for (uint32_t x = tile.x0; x < tile.x1; ++x) {
                 uint32_t sampleRays = 0;
-                const Vec3 c = renderSample<F>(scene, frame, x, y, pass, sampleRays);
-                accum[(size_t)y * frame.camera.width + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
+                const Vec3 c = renderSample<F>(scene, frame, frame.pixelX(x), frame.pixelY(y), pass, sampleRays);
+                accum[(size_t)y * frame.accumWidth() + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
                 rays += sampleRays;
             }
         }
@@ -78,19 +79,29 @@ public:
     }
     void reset() override {
         std::fill(accum_.begin(), accum_.end(), AccumPixel{});
+        std::fill(probe_.begin(), probe_.end(), AccumPixel{});
         rays_ = 0;
     }
+    bool hasProbe() const override { return true; }
+    void resizeProbe(const PixelLattice& lattice) override {
+        probeLattice_ = lattice;
+        probe_.assign((size_t)lattice.width * lattice.height, AccumPixel{});
+    }
+    void readProbe(std::vector<AccumPixel>& out) override { out = probe_; }
 
     void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override {
-        const uint32_t tilesX = (width_ + kTileSize - 1) / kTileSize;
-        const uint32_t tilesY = (height_ + kTileSize - 1) / kTileSize;
+        const uint32_t width = frame.accumWidth(), height = frame.accumHeight();
+        checkAccumulation(frame, width_, height_, probeLattice_);
+        AccumPixel* const accum = frame.lattice.isProbe() ? probe_.data() : accum_.data();
+        const uint32_t tilesX = (width + kTileSize - 1) / kTileSize;
+        const uint32_t tilesY = (height + kTileSize - 1) / kTileSize;
         const uint32_t tileCount = tilesX * tilesY;
         std::atomic<uint64_t> rays{0};
         const auto renderTile = kTileVariants[sampleVariantFor(view_.features)];
         pool_.parallelFor(tileCount, 1, [&](size_t tile, size_t) {
             const uint32_t x0 = (uint32_t(tile) % tilesX) * kTileSize, y0 = (uint32_t(tile) / tilesX) * kTileSize;
-            const Tile t{x0, y0, std::min(x0 + kTileSize, width_), std::min(y0 + kTileSize, height_)};
-            rays.fetch_add(renderTile(view_, frame, t, firstPass, passCount, accum_.data()), std::memory_order_relaxed);
+            const Tile t{x0, y0, std::min(x0 + kTileSize, width), std::min(y0 + kTileSize, height)};
+            rays.fetch_add(renderTile(view_, frame, t, firstPass, passCount, accum), std::memory_order_relaxed);
         });
         rays_ += rays.load();
     }
@@ -115,6 +126,8 @@ private:
     SceneView view_{};
     uint32_t width_ = 0, height_ = 0;
     std::vector<AccumPixel> accum_;
+    PixelLattice probeLattice_{};
+    std::vector<AccumPixel> probe_;
     uint64_t rays_ = 0;
 };
 

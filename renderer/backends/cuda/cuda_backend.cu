@@ -145,6 +145,7 @@ public:
     ~CudaBackend() override {
         cudaSetDevice(deviceIndex_);  // the members' device arrays are freed after this body, on this device
         cudaFree(accum_);
+        cudaFree(probe_);
         cudaFree(rayCounter_);
     }
 
@@ -186,15 +187,33 @@ public:
     void reset() override {
         useDevice();
         TRAZO_CUDA_CHECK(cudaMemset(accum_, 0, pixelCount() * sizeof(AccumPixel)));
+        if (probe_) TRAZO_CUDA_CHECK(cudaMemset(probe_, 0, probePixelCount() * sizeof(AccumPixel)));
         TRAZO_CUDA_CHECK(cudaMemset(rayCounter_, 0, sizeof(unsigned long long)));
+    }
+    bool hasProbe() const override { return true; }
+    void resizeProbe(const PixelLattice& lattice) override {
+        useDevice();
+        cudaFree(probe_);
+        probe_ = nullptr;
+        probeLattice_ = PixelLattice{};
+        TRAZO_CUDA_CHECK(cudaMalloc(&probe_, (size_t)lattice.width * lattice.height * sizeof(AccumPixel)));
+        probeLattice_ = lattice;
+        TRAZO_CUDA_CHECK(cudaMemset(probe_, 0, probePixelCount() * sizeof(AccumPixel)));
+    }
+    void readProbe(std::vector<AccumPixel>& out) override {
+        useDevice();
+        out.resize(probePixelCount());
+        TRAZO_CUDA_CHECK(cudaMemcpy(out.data(), probe_, probePixelCount() * sizeof(AccumPixel), cudaMemcpyDeviceToHost));
     }
     void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override {
         useDevice();
+        checkAccumulation(frame, width_, height_, probeLattice_);
+        AccumPixel* const accum = frame.lattice.isProbe() ? probe_ : accum_;
         const dim3 block(kPassBlockX, kPassBlockY);
-        const dim3 grid((width_ + block.x - 1) / block.x, (height_ + block.y - 1) / block.y);
+        const dim3 grid((frame.accumWidth() + block.x - 1) / block.x, (frame.accumHeight() + block.y - 1) / block.y);
         const auto launch = kLaunchVariants[sampleVariantFor(view_.features)];
         for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
-            launch(grid, block, view_, frame, pass, accum_, rayCounter_);
+            launch(grid, block, view_, frame, pass, accum, rayCounter_);
             checkPasses(cudaGetLastError(), pass, pass + 1);
             if (syncEveryPass_) checkPasses(cudaDeviceSynchronize(), pass, pass + 1);
         }
@@ -247,6 +266,7 @@ public:
 
 private:
     size_t pixelCount() const { return (size_t)width_ * height_; }
+    size_t probePixelCount() const { return (size_t)probeLattice_.width * probeLattice_.height; }
     void useDevice() const { TRAZO_CUDA_CHECK(cudaSetDevice(deviceIndex_)); }
 
     int deviceIndex_ = 0;
@@ -261,6 +281,8 @@ private:
     DeviceArray<RayQuery> queries_;  // traceRays' buffers, kept for the next call
     DeviceArray<RayAnswer> hits_;
     AccumPixel* accum_ = nullptr;
+    AccumPixel* probe_ = nullptr;
+    PixelLattice probeLattice_{};
     unsigned long long* rayCounter_ = nullptr;
     uint32_t width_ = 0, height_ = 0;
     std::unique_ptr<CudaGlDisplay, void (*)(CudaGlDisplay*)> glDisplay_{nullptr, destroyCudaGlDisplay};

@@ -18,9 +18,9 @@ __global__ void __launch_bounds__(kPassBlockX* kPassBlockY, TRAZO_CUDA_PASS_MIN_
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
     uint32_t rays = 0;
-    if (x < frame.camera.width && y < frame.camera.height) {
-        const Vec3 c = renderSample<F>(scene, frame, x, y, pass, rays);
-        accum[(size_t)y * frame.camera.width + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
+    if (x < frame.accumWidth() && y < frame.accumHeight()) {  // accumulation pixels: the image's or the probe's
+        const Vec3 c = renderSample<F>(scene, frame, frame.pixelX(x), frame.pixelY(y), pass, rays);
+        accum[(size_t)y * frame.accumWidth() + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
     }
     // One atomic per warp for the ray count.
     for (int offset = 16; offset > 0; offset /= 2) rays += __shfl_down_sync(0xffffffffu, rays, offset);
