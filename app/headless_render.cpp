@@ -17,6 +17,7 @@
 #include "io/text_file.h"
 #include "progress_bar.h"
 #include "render/error_estimate.h"
+#include "render/error_probe.h"
 #include "render/frame_setup.h"
 #include "render/multi_backend.h"
 #include "render/partial_file.h"
@@ -224,7 +225,16 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     limits.seconds = options.seconds;
     limits.targetError = options.targetError;
     limits.cyclePasses = stats.fullCycle;
-    if (options.targetError > 0 && !splitsHalves(limits.cyclePasses)) {
+    // The error probe, but for a partial render: its parts are merged, and the merge estimates from the halves.
+    if (!partial && backend->hasProbe()) {
+        limits.probe = probeLattice(stats.width, stats.height, options.seed);
+        try {
+            backend->resizeProbe(limits.probe);
+        } catch (const std::bad_alloc&) {
+            return refuseMemory(", which cannot be allocated");
+        }
+    }
+    if (options.targetError > 0 && !limits.probe.isProbe() && !splitsHalves(limits.cyclePasses)) {
         std::fprintf(stderr, "trazo: --target-error: this scene's strata do not repeat within %u passes, so "
                              "its error cannot be estimated; use --spp or --time\n", kMaxCyclePasses);
         return 2;
@@ -252,10 +262,11 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
         std::fprintf(stderr, "trazo: stopped by signal %d before any pass; nothing was written\n", (int)stopSignal);
         return 3;
     }
-    backend->readAccumulation(accum);  // into the capacity reserved above
-    const ErrorEstimate estimate = estimateError(accum);
+    // Into the capacity reserved above.
+    const ErrorEstimate estimate = estimateRenderError(*backend, limits, stats.width, accum);
     stats.estimatedRelError = estimate.relError;
-    stats.estimateBalanced = estimate.available && halvesBalanced(limits.cyclePasses, done);
+    stats.probePixels = estimate.probePixels;
+    stats.estimateBalanced = estimate.available && (estimate.probePixels > 0 || halvesBalanced(limits.cyclePasses, done));
 
     // The output: the partial file, or the image resolved into the capacity reserved above. The backend's
     // accumulation goes first: room for the writer's buffer.

@@ -1,11 +1,12 @@
 // Batching of passes: the first batch is one pass; later ones aim at kBatchSeconds each. With a target
-// error the accumulation is read at growing intervals (multiples of 2·cycle, spaced by the predicted need).
+// error the accumulation is read at growing intervals (spaced by the predicted need; without a probe at
+// multiples of 2·cycle).
 #include "render/progressive_render.h"
 
 #include <algorithm>
 #include <chrono>
 
-#include "render/error_estimate.h"
+#include "render/error_probe.h"
 
 namespace trazo {
 
@@ -37,6 +38,15 @@ void renderPassRange(Backend& backend, const FrameParams& frame, uint32_t firstP
     backend.renderPasses(split, firstPass, count);
 }
 
+ErrorEstimate estimateRenderError(Backend& backend, const RenderLimits& limits, uint32_t width,
+                                  std::vector<AccumPixel>& accum) {
+    backend.readAccumulation(accum);
+    if (!limits.probe.isProbe()) return estimateError(accum);
+    std::vector<AccumPixel> probe;
+    backend.readProbe(probe);
+    return estimateErrorWithProbe(accum, width, limits.probe, probe);
+}
+
 RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, const RenderLimits& limits,
                                 const std::function<void(const RenderProgress&)>& onProgress) {
     using Clock = std::chrono::steady_clock;
@@ -44,8 +54,11 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
     auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
     const uint32_t maxPasses = std::min(limits.passes, kMaxProgressivePasses);
-    const bool targeted = limits.targetError > 0.0 && splitsHalves(limits.cyclePasses);
-    const uint64_t checkStep = 2ull * std::max(limits.cyclePasses, 1u);  // where the halves are balanced
+    const bool probed = limits.probe.isProbe();
+    const FrameParams probe = probed ? probeFrame(frame, limits.probe) : FrameParams{};
+    const bool targeted = limits.targetError > 0.0 && (probed || splitsHalves(limits.cyclePasses));
+    // The probe's estimate holds at any pass count; the halves' where they are balanced.
+    const uint64_t checkStep = probed ? 1u : 2ull * std::max(limits.cyclePasses, 1u);
     uint64_t nextCheck = targeted ? checkStep : UINT64_MAX;
     std::vector<AccumPixel> accum;
 
@@ -56,12 +69,12 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
         const uint32_t count =
             (uint32_t)std::min<uint64_t>({batch, maxPasses - out.passes, nextCheck - out.passes});
         renderPassRange(backend, frame, limits.firstPass + out.passes, count, limits.cyclePasses);
+        if (probed) renderPassRange(backend, probe, limits.firstPass + out.passes, count, limits.cyclePasses);
         out.passes += count;
         const double t = elapsed();
 
         if (targeted && out.passes >= nextCheck) {
-            backend.readAccumulation(accum);
-            const ErrorEstimate e = estimateError(accum);
+            const ErrorEstimate e = estimateRenderError(backend, limits, frame.camera.width, accum);
             out.estimatedRelError = e.relError;
             ++out.errorChecks;
             if (e.available && e.relError <= limits.targetError) {

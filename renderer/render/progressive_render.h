@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "backends/backend.h"
+#include "render/error_estimate.h"
 #include "render/pass_range.h"
 #include "render/strata_plan.h"
 
@@ -36,12 +37,15 @@ constexpr uint32_t kMaxProgressivePasses = 1u << 30;
 struct RenderLimits {
     uint32_t passes = 1;       // stop after this many passes (capped at kMaxProgressivePasses)
     double seconds = 0.0;      // and after this wall time, when > 0 (whichever comes first)
-    double targetError = 0.0;  // and once estimateError(...).relError <= this, when > 0
-    // The scene's full cycle for the frame's blocks (fullCyclePasses): sets the half split, and the target
-    // error is checked only at multiples of 2·cyclePasses, where the estimate is unbiased (and a stratified
-    // image is at its best). 0: no halves and no target error.
+    double targetError = 0.0;  // and once estimateRenderError(...).relError <= this, when > 0
+    // The scene's full cycle for the frame's blocks (fullCyclePasses): sets the half split; without a probe
+    // the target error is checked only at multiples of 2·cyclePasses, where the halves' estimate is unbiased
+    // (and a stratified image is at its best). 0: no halves, and no target error without a probe.
     uint32_t cyclePasses = 0;
     uint32_t firstPass = 0;  // the global index of the first pass (a partial render of passes [first, first + passes))
+    // The error probe's lattice (render/error_probe.h; stride 0: none, the backend's resizeProbe made it): every
+    // batch renders it beside the image, and the target error is checked from the first pass on.
+    PixelLattice probe{};
     // When set and true (a signal handler sets it), the render stops after the current batch.
     const std::atomic<bool>* stop = nullptr;
 };
@@ -60,6 +64,11 @@ struct RenderOutcome {
     uint32_t errorChecks = 0;        // accumulation reads made for the target error
     bool reachedTarget = false;
 };
+
+// The render's error now: from the probe when limits.probe has one, otherwise from the halves. Leaves the
+// image's accumulation in `accum`.
+ErrorEstimate estimateRenderError(Backend& backend, const RenderLimits& limits, uint32_t width,
+                                  std::vector<AccumPixel>& accum);
 
 RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, const RenderLimits& limits,
                                 const std::function<void(const RenderProgress&)>& onProgress = {});
