@@ -17,7 +17,6 @@
 #include "io/text_file.h"
 #include "progress_bar.h"
 #include "render/error_estimate.h"
-#include "render/error_probe.h"
 #include "render/frame_setup.h"
 #include "render/multi_backend.h"
 #include "render/partial_file.h"
@@ -226,15 +225,8 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     limits.targetError = options.targetError;
     limits.cyclePasses = stats.fullCycle;
     // The error probe, but for a partial render: its parts are merged, and the merge estimates from the halves.
-    if (!partial && backend->hasProbe()) {
-        limits.probe = probeLattice(stats.width, stats.height, options.seed);
-        try {
-            backend->resizeProbe(limits.probe);
-        } catch (const std::bad_alloc&) {
-            return refuseMemory(", which cannot be allocated");
-        }
-    }
-    if (options.targetError > 0 && !limits.probe.isProbe() && !splitsHalves(limits.cyclePasses)) {
+    limits.errorProbe = !partial && backend->hasProbe();
+    if (options.targetError > 0 && !limits.errorProbe && !splitsHalves(limits.cyclePasses)) {
         std::fprintf(stderr, "trazo: --target-error: this scene's strata do not repeat within %u passes, so "
                              "its error cannot be estimated; use --spp or --time\n", kMaxCyclePasses);
         return 2;
@@ -263,7 +255,7 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
         return 3;
     }
     // Into the capacity reserved above.
-    const ErrorEstimate estimate = estimateRenderError(*backend, limits, stats.width, accum);
+    const ErrorEstimate estimate = estimateRenderError(*backend, outcome.probe, accum);
     stats.estimatedRelError = estimate.relError;
     stats.probePixels = estimate.probePixels;
     stats.estimateBalanced = estimate.available && (estimate.probePixels > 0 || halvesBalanced(limits.cyclePasses, done));

@@ -152,7 +152,9 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
         const double spp = jsonNumber(json, "spp"), cycle = jsonNumber(json, "full_cycle_spp");
         EXPECT_EQ(cycle, *blocks ? 16.0 : 1.0) << json;
         EXPECT_GT(spp, 1.0) << "a 3 % target needs more than one pass here: " << json;
-        EXPECT_EQ(jsonNumber(json, "error_probe_pixels"), 300.0) << "40 × 30, every 2nd pixel: " << json;
+        // 40 × 30: a quarter of the pixels at the base chance (~300), plus the brightest.
+        EXPECT_GT(jsonNumber(json, "error_probe_pixels"), 200.0) << json;
+        EXPECT_LT(jsonNumber(json, "error_probe_pixels"), 500.0) << json;
     }
 
     // One pass states its error too (the error probe), and a loose target is met by the first pass.

@@ -45,17 +45,18 @@ public:
     virtual void resize(uint32_t width, uint32_t height) = 0;
     // Clears the sums and counts (no reallocation).
     virtual void reset() = 0;
-    // Adds passes [firstPass, firstPass + passCount) to every pixel of the accumulation frame.lattice names
+    // Adds passes [firstPass, firstPass + passCount) to every pixel of the accumulation frame.target names
     // (the image's, or the probe's); blocks until done.
     virtual void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) = 0;
     // Copies the accumulation buffer (row 0 = top) to the host.
     virtual void readAccumulation(std::vector<AccumPixel>& out) = 0;
-    // The error probe (render/error_probe.h): a second accumulation, lattice.width × lattice.height pixels of
-    // the image rendered again with an independent seed. resizeProbe (re)allocates and clears it; reset()
-    // clears it too. A backend without one (hasProbe() false) leaves the estimate to the image's halves.
+    // The error probe (render/error_probe.h): a second accumulation, of the image pixels `pixels` lists
+    // (indices y·width + x) rendered again with an independent seed. resizeProbe takes the list and
+    // (re)allocates and clears it; reset() clears it too; readProbe gives one AccumPixel per listed pixel. A
+    // backend without one (hasProbe() false) leaves the estimate to the image's halves.
     virtual bool hasProbe() const { return false; }
-    virtual void resizeProbe(const PixelLattice& lattice) {
-        (void)lattice;
+    virtual void resizeProbe(const std::vector<uint32_t>& pixels) {
+        (void)pixels;
         throw std::logic_error("the " + name() + " backend has no error probe");
     }
     virtual void readProbe(std::vector<AccumPixel>& out) {
@@ -86,14 +87,23 @@ public:
     virtual void releaseGlBuffer() {}
 };
 
-// Refuses a pass whose accumulation (frame.lattice) is not the one allocated: the image's (resize) or the
-// probe's (resizeProbe). A kernel would otherwise write out of bounds.
-inline void checkAccumulation(const FrameParams& frame, uint32_t width, uint32_t height, const PixelLattice& probe) {
-    const bool matches = frame.lattice.isProbe()
-                             ? frame.lattice.width == probe.width && frame.lattice.height == probe.height &&
-                                   probe.width != 0 && frame.lattice.stride == probe.stride
-                             : frame.camera.width == width && frame.camera.height == height;
+// The frame a backend renders: the caller's, with a probe pass's `target` pointed at the backend's own copy of
+// the list (`probePixels`, `probeCount` of them, in the memory its kernels read). Refuses a frame whose
+// pixels are not the allocated accumulation's (resize, resizeProbe): a kernel would write out of bounds.
+inline FrameParams boundFrame(const FrameParams& frame, uint32_t width, uint32_t height, const uint32_t* probePixels,
+                              uint32_t probeCount) {
+    const bool matches = frame.camera.width == width && frame.camera.height == height &&
+                         (!frame.target.probe || (probePixels != nullptr && probeCount > 0));
     if (!matches) throw std::logic_error("renderPasses: the frame's pixels differ from the allocated accumulation");
+    FrameParams bound = frame;
+    if (frame.target.probe) bound.target = PassPixels{true, probePixels, probeCount};
+    return bound;
+}
+
+// Probe pixels as the list says, each checked against the image (width × height): an index beyond it is refused.
+inline void checkProbePixels(const std::vector<uint32_t>& pixels, uint32_t width, uint32_t height) {
+    for (uint32_t p : pixels)
+        if ((uint64_t)p >= (uint64_t)width * height) throw std::logic_error("resizeProbe: a pixel beyond the image");
 }
 
 inline double Backend::traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) {

@@ -9,14 +9,16 @@
 
 namespace trazo {
 
-// The pixels a pass renders, and where it adds them. The image (stride 0): every pixel, accumulation pixel =
-// image pixel. The error probe (render/error_probe.h): accumulation pixel (i, j) of a width × height buffer is
-// image pixel (offsetX + stride·i, offsetY + stride·j), rendered with the probe's own seed.
-struct PixelLattice {
-    uint32_t stride = 0;
-    uint32_t offsetX = 0, offsetY = 0;
-    uint32_t width = 0, height = 0;
-    TRAZO_HD bool isProbe() const { return stride != 0; }
+// The pixels a pass renders, and where it adds them. The image (probe false): every pixel, accumulation pixel
+// = image pixel. The error probe (render/error_probe.h): a list of image pixel indices, rendered with the
+// probe's own seed into an accumulation kProbeRow wide, accumulation pixel (i, j) holding pixels[j·kProbeRow
+// + i] (the last row padded). The caller sets `probe`; the backend points `pixels` at its own copy of the list.
+constexpr uint32_t kProbeRow = 256;
+
+struct PassPixels {
+    bool probe = false;
+    const uint32_t* pixels = nullptr;
+    uint32_t count = 0;
 };
 
 struct FrameParams {
@@ -41,12 +43,23 @@ struct FrameParams {
         const uint32_t window = strataWindow != 0 ? pass / strataWindow : 0u;
         return window == 0 ? seed : hashCombine(seed, window);
     }
-    PixelLattice lattice{};
-    // The accumulation a pass adds to, and the image pixel each of its pixels is.
-    TRAZO_HD uint32_t accumWidth() const { return lattice.isProbe() ? lattice.width : camera.width; }
-    TRAZO_HD uint32_t accumHeight() const { return lattice.isProbe() ? lattice.height : camera.height; }
-    TRAZO_HD uint32_t pixelX(uint32_t i) const { return lattice.isProbe() ? lattice.offsetX + lattice.stride * i : i; }
-    TRAZO_HD uint32_t pixelY(uint32_t j) const { return lattice.isProbe() ? lattice.offsetY + lattice.stride * j : j; }
+    PassPixels target{};
+    // The accumulation a pass adds to, and the image pixel each of its pixels is (false: the probe's padding).
+    TRAZO_HD uint32_t accumWidth() const { return target.probe ? kProbeRow : camera.width; }
+    TRAZO_HD uint32_t accumHeight() const {
+        return target.probe ? (target.count + kProbeRow - 1) / kProbeRow : camera.height;
+    }
+    TRAZO_HD bool imagePixel(uint32_t i, uint32_t j, uint32_t& px, uint32_t& py) const {
+        if (!target.probe) {
+            px = i, py = j;
+            return true;
+        }
+        const uint32_t k = j * kProbeRow + i;
+        if (k >= target.count) return false;
+        px = target.pixels[k] % camera.width;
+        py = target.pixels[k] / camera.width;
+        return true;
+    }
 };
 
 }  // namespace trazo

@@ -1,4 +1,4 @@
-// The error probe's lattice, frame and estimate (formulas in the header).
+// The error probe's draw, frame and estimate (formulas in the header).
 #include "render/error_probe.h"
 
 #include <algorithm>
@@ -12,35 +12,12 @@ namespace {
 
 constexpr uint32_t kProbeSeedSalt = 0x70726f62u;  // "prob": the probe's seed is hashCombine(seed, this)
 
-uint32_t latticeSide(uint32_t size, uint32_t offset, uint32_t stride) {
-    return size > offset ? (size - offset + stride - 1) / stride : 0u;
+double squaredValue(const AccumPixel& p) {
+    if (!(p.count > 0.0)) return 0.0;
+    double s = 0.0;
+    for (int c = 0; c < 3; ++c) s += (p.sum[c] / p.count) * (p.sum[c] / p.count);
+    return s;
 }
-
-}  // namespace
-
-PixelLattice probeLattice(uint32_t width, uint32_t height, uint32_t seed) {
-    const double pixels = double(width) * double(height);
-    const uint32_t stride =
-        std::max(kProbeMinStride, (uint32_t)std::floor(std::sqrt(pixels / double(kProbeTargetPixels))));
-    PixelLattice l;
-    l.stride = stride;
-    const uint32_t h = hashCombine(seed, kProbeSeedSalt + 1u);
-    // An offset inside the image even when it is narrower than the stride.
-    l.offsetX = (h & 0xffffu) % std::min(stride, std::max(width, 1u));
-    l.offsetY = (h >> 16) % std::min(stride, std::max(height, 1u));
-    l.width = latticeSide(width, l.offsetX, stride);
-    l.height = latticeSide(height, l.offsetY, stride);
-    return l;
-}
-
-FrameParams probeFrame(const FrameParams& image, const PixelLattice& lattice) {
-    FrameParams f = image;
-    f.seed = hashCombine(image.seed, kProbeSeedSalt);
-    f.lattice = lattice;
-    return f;
-}
-
-namespace {
 
 // Per pixel, the halves' statistic of error_estimate.h, Σ_c (nA·nB/n²)(A − B)²; −1 without two halves.
 double halvesStatistic(const AccumPixel& p) {
@@ -56,14 +33,44 @@ double halvesStatistic(const AccumPixel& p) {
 
 }  // namespace
 
-ErrorEstimate estimateErrorWithProbe(const std::vector<AccumPixel>& image, uint32_t width,
-                                     const PixelLattice& lattice, const std::vector<AccumPixel>& probe) {
+ErrorProbe designProbe(const std::vector<AccumPixel>& image, uint32_t width, uint32_t height, uint32_t seed) {
+    ErrorProbe probe;
+    const size_t n = (size_t)width * height;
+    if (n == 0 || image.size() != n) return probe;
+    // Small images: at least ~64 pixels, all of them below 64.
+    const double base = std::max(std::min(kProbeMaxBaseShare, double(kProbeBasePixels) / double(n)),
+                                 std::min(1.0, double(kProbeMinPixels) / double(n)));
+    double total = 0.0;
+    for (const AccumPixel& p : image) total += squaredValue(p);
+    // π_i = min(1, base + s_i/τ) with Σ s_i/τ = the bright share's expected draw.
+    const double perValue = total > 0.0 ? kProbeBrightShare * base * double(n) / total : 0.0;
+    const uint32_t key = hashCombine(seed, kProbeSeedSalt + 1u);
+    for (size_t i = 0; i < n; ++i) {
+        const double chance = std::min(1.0, base + perValue * squaredValue(image[i]));
+        const double u = double(hashCombine(key, (uint32_t)i)) * 0x1p-32;  // uniform in [0, 1)
+        if (u < chance) {
+            probe.pixels.push_back((uint32_t)i);
+            probe.weights.push_back(1.0 / chance);
+        }
+    }
+    return probe;
+}
+
+FrameParams probeFrame(const FrameParams& image) {
+    FrameParams f = image;
+    f.seed = hashCombine(image.seed, kProbeSeedSalt);
+    f.target = PassPixels{true, nullptr, 0};
+    return f;
+}
+
+ErrorEstimate estimateErrorWithProbe(const std::vector<AccumPixel>& image, const ErrorProbe& probe,
+                                     const std::vector<AccumPixel>& probeAccum) {
     ErrorEstimate e;
-    if (image.empty() || probe.empty() || probe.size() != (size_t)lattice.width * lattice.height) return e;
+    if (image.empty() || probe.empty() || probeAccum.size() != probe.pixels.size()) return e;
     e.passes = (uint32_t)image[0].count;
     e.secondHalfPasses = (uint32_t)image[0].countB;
-    e.probePixels = (uint32_t)probe.size();
-    double mean = 0.0, halvesAll = 0.0, halvesLattice = 0.0;
+    e.probePixels = (uint32_t)probe.pixels.size();
+    double mean = 0.0, halvesAll = 0.0;
     bool halves = true;
     for (const AccumPixel& p : image) {
         if (p.count > 0.0) mean += (p.sum[0] + p.sum[1] + p.sum[2]) / p.count;
@@ -71,31 +78,29 @@ ErrorEstimate estimateErrorWithProbe(const std::vector<AccumPixel>& image, uint3
         halves = halves && h >= 0.0;
         halvesAll += h;
     }
-    e.meanValue = mean / (3.0 * image.size());
+    const double values = 3.0 * image.size();
+    e.meanValue = mean / values;
 
-    double squares = 0.0;
-    for (uint32_t j = 0; j < lattice.height; ++j) {
-        for (uint32_t i = 0; i < lattice.width; ++i) {
-            const AccumPixel& g = probe[(size_t)j * lattice.width + i];
-            const size_t at = (size_t)(lattice.offsetY + lattice.stride * j) * width + lattice.offsetX + lattice.stride * i;
-            if (at >= image.size()) return e;
-            const AccumPixel& f = image[at];
-            if (!(f.count > 0.0) || f.count != g.count) return e;  // the probe must hold the image's passes
-            halvesLattice += halvesStatistic(f);
-            for (int c = 0; c < 3; ++c) {
-                const double d = f.sum[c] / f.count - g.sum[c] / g.count;
-                squares += 0.5 * d * d;
-            }
+    double squares = 0.0, halvesProbed = 0.0;
+    for (size_t k = 0; k < probe.pixels.size(); ++k) {
+        if (probe.pixels[k] >= image.size()) return e;
+        const AccumPixel& f = image[probe.pixels[k]];
+        const AccumPixel& g = probeAccum[k];
+        if (!(f.count > 0.0) || f.count != g.count) return e;  // the probe must hold the image's passes
+        double s = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            const double d = f.sum[c] / f.count - g.sum[c] / g.count;
+            s += 0.5 * d * d;
         }
+        squares += probe.weights[k] * s;
+        if (halves) halvesProbed += probe.weights[k] * halvesStatistic(f);
     }
     e.available = true;
-    double mse = squares / (3.0 * probe.size());
-    // The ratio estimator of two-phase sampling: where the image has halves, their statistic, known at every
-    // pixel, scales the lattice's estimate by how much noisier the whole image is than the lattice. A rare
-    // bright sample off the lattice (a glossy reflection of a light) then counts, and one on it is not
-    // counted stride² times over. The halves' own bias (unequal stratification) cancels in the ratio.
-    if (halves && halvesLattice > 0.0)
-        mse *= (halvesAll / double(image.size())) / (halvesLattice / double(probe.size()));
+    double mse = squares / values;
+    // The ratio estimator of two-phase sampling: the halves' statistic, known at every pixel, scales the
+    // probed pixels' sum by how much noisier the whole image is than they say. A rare bright sample the draw
+    // missed then counts; the halves' own bias (unequal stratification) cancels in the ratio.
+    if (halves && halvesProbed > 0.0) mse *= halvesAll / halvesProbed;
     e.rmse = std::sqrt(mse);
     e.relError = e.meanValue > 0.0 ? e.rmse / e.meanValue : (e.rmse > 0.0 ? INFINITY : 0.0);
     return e;

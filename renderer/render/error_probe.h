@@ -1,38 +1,49 @@
-// The error probe: an estimate of any render's error, a one-pass render's included. A lattice of the image's
-// pixels (every stride-th pixel across and down, from an offset the seed draws) is rendered a second time over
-// the same passes with an independent seed. At a lattice pixel, per channel, the image's value F and the
-// probe's G are then independent estimates of the same pixel with the same distribution, so
-//     E[(F − G)²] = 2 Var(F)   ⇒   estimated MSE of the image = mean over the lattice of (F − G)² / 2,
-// unbiased whatever the pass count, the blocks or the stratification (the halves of error_estimate.h need two
-// equally stratified halves, which one pass, or a cycle of one glossy stratum per pass, does not have).
-// relError = sqrt(MSE) / the whole image's mean channel value, as error_estimate.h defines it. The probe costs
-// its share of the image's work, 1/stride²: a quarter at most, under 2 % from 512 × 512 up. Host code.
+// The error probe: an estimate of any render's error, a one-pass render's included. After the image's first
+// pass, a sample of its pixels is drawn and rendered a second time over the same passes with an independent
+// seed. At a probed pixel, per channel, the image's value F and the probe's G are then independent estimates
+// of the same pixel with the same distribution, so E[(F − G)²/2] = Var(F), and the Horvitz–Thompson sum
+//     estimated MSE = (1/3N) Σ_probed (1/π_i) Σ_c (F_ic − G_ic)²/2
+// is unbiased for the image's mean squared error (N pixels, π_i the chance pixel i was drawn), whatever the
+// passes, blocks or stratification (the halves of error_estimate.h need two equally stratified halves, which
+// one pass, or a cycle of one glossy stratum per pass, does not have). The draw may depend on the first pass
+// (it is independent of G): each pixel is drawn with a base chance, ~4096 pixels on large images, plus a share
+// proportional to its squared value there, so the few bright pixels that carry most of an image's squared
+// error (a specular highlight, a bright indirect path) are probed with certainty instead of by luck. Where
+// the image has halves, their statistic, known at every pixel, rescales the sum (a ratio estimator).
+// relError = sqrt(MSE) / the image's mean channel value, as error_estimate.h defines it. The probe costs about
+// 1.25 × its base share of the image's work: under 2 % from 512 × 512 up, at most 31 %. Host code.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "core/accumulation.h"
 #include "integrator/frame_params.h"
 #include "render/error_estimate.h"
 
 namespace trazo {
 
-// About this many lattice pixels (3 channels each): enough that the estimate's own sampling error stays a few
-// percent of it even when the error sits in a small part of the image (a penumbra, a glossy highlight).
-constexpr uint32_t kProbeTargetPixels = 4096;
-constexpr uint32_t kProbeMinStride = 2;
+constexpr uint32_t kProbeBasePixels = 4096;  // the base chance's expected draw on large images
+constexpr double kProbeMaxBaseShare = 0.25;  // the base chance on small images
+constexpr uint32_t kProbeMinPixels = 64;     // ... unless that would draw fewer pixels than this
+constexpr double kProbeBrightShare = 0.25;   // the bright share's expected draw, over the base's
 
-// The lattice of a width × height image: stride max(2, ⌊√(pixels / kProbeTargetPixels)⌋), offset drawn from
-// the seed (so no image structure lines up with it on purpose).
-PixelLattice probeLattice(uint32_t width, uint32_t height, uint32_t seed);
+struct ErrorProbe {
+    std::vector<uint32_t> pixels;  // image pixel indices (y·width + x), ascending
+    std::vector<double> weights;   // 1/π of each
+    bool empty() const { return pixels.empty(); }
+};
 
-// The image's frame with the probe's lattice and its own seed (so its strata and jitter are independent).
-FrameParams probeFrame(const FrameParams& image, const PixelLattice& lattice);
+// Draws the probe from the image's accumulation after its first pass (width × height, seed: the render's).
+ErrorProbe designProbe(const std::vector<AccumPixel>& image, uint32_t width, uint32_t height, uint32_t seed);
 
-// The estimate above from the image's accumulation (width pixels a row) and the probe's. Available when both
-// hold the same sample weight in every lattice pixel (they render the same passes); probePixels reports the
-// lattice's size.
-ErrorEstimate estimateErrorWithProbe(const std::vector<AccumPixel>& image, uint32_t width,
-                                     const PixelLattice& lattice, const std::vector<AccumPixel>& probe);
+// The image's frame rendering the probe: its own seed (so its strata and jitter are independent of the
+// image's) into the backend's probe accumulation (Backend::resizeProbe took the pixels).
+FrameParams probeFrame(const FrameParams& image);
+
+// The estimate above from the image's accumulation and the probe's (one AccumPixel per probed pixel).
+// Available when every probed pixel holds the image's sample weight in both; probePixels reports the count.
+ErrorEstimate estimateErrorWithProbe(const std::vector<AccumPixel>& image, const ErrorProbe& probe,
+                                     const std::vector<AccumPixel>& probeAccum);
 
 }  // namespace trazo

@@ -1,7 +1,8 @@
-// The error probe: its lattice, its estimate against a known variance, and the backend rendering exactly the
-// lattice's pixels with the probe's seed.
+// The error probe: its draw, its estimate against a known variance, and the backend rendering exactly the
+// drawn pixels with the probe's seed.
 #include "render/error_probe.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -15,61 +16,79 @@
 namespace trazo {
 namespace {
 
-TEST(ErrorProbe, LatticeCoversTheImageAtAboutTheTargetPixelCount) {
-    for (const auto& [w, h] : std::vector<std::pair<uint32_t, uint32_t>>{
-             {512, 512}, {1920, 1080}, {96, 72}, {40, 30}, {1, 1}, {3, 1}, {7000, 5}, {8192, 8192}}) {
-        for (uint32_t seed : {0u, 1u, 12345u}) {
-            const PixelLattice l = probeLattice(w, h, seed);
-            SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h) + " seed " + std::to_string(seed));
-            EXPECT_GE(l.stride, kProbeMinStride);
-            ASSERT_GE(l.width, 1u);
-            ASSERT_GE(l.height, 1u);
-            // The last lattice pixel lies inside the image, the next one outside.
-            EXPECT_LT(l.offsetX + l.stride * (l.width - 1), w);
-            EXPECT_GE(l.offsetX + l.stride * l.width, w);
-            EXPECT_LT(l.offsetY + l.stride * (l.height - 1), h);
-            EXPECT_GE(l.offsetY + l.stride * l.height, h);
-            const double pixels = double(l.width) * l.height;
-            if (double(w) * h >= 4.0 * kProbeTargetPixels * 4.0) {  // large images: about the target, ≤ 2 % work
-                EXPECT_GT(pixels, 0.7 * kProbeTargetPixels);
-                EXPECT_LT(pixels, 2.5 * kProbeTargetPixels);
-                EXPECT_LE(pixels / (double(w) * h), 0.02);
+// An image of value v(x) per pixel after its first pass, n samples.
+std::vector<AccumPixel> flatImage(uint32_t width, uint32_t height, double passes, double (*value)(uint32_t, uint32_t)) {
+    std::vector<AccumPixel> image((size_t)width * height);
+    for (uint32_t y = 0; y < height; ++y)
+        for (uint32_t x = 0; x < width; ++x) {
+            AccumPixel& p = image[(size_t)y * width + x];
+            p.count = passes;
+            for (int c = 0; c < 3; ++c) p.sum[c] = passes * value(x, y);
+        }
+    return image;
+}
+
+TEST(ErrorProbe, DrawsAboutTheBaseShareAndEveryBrightPixel) {
+    // 512²: a dim image with 20 pixels 100 times brighter (a highlight).
+    auto value = [](uint32_t x, uint32_t y) { return (y == 200 && x >= 100 && x < 120) ? 20.0 : 0.2; };
+    const std::vector<AccumPixel> image = flatImage(512, 512, 1.0, value);
+    for (uint32_t seed : {0u, 1u, 77u}) {
+        const ErrorProbe probe = designProbe(image, 512, 512, seed);
+        ASSERT_EQ(probe.pixels.size(), probe.weights.size());
+        // π = min(1, 1/64 + s·τ⁻¹), s = Σ_c value², τ⁻¹ = 0.25·4096 / Σ s: the 20 bright pixels (s = 1200) are
+        // capped at 1, each dim one (s = 0.12) has 1/64 + 0.12·τ⁻¹. Poisson count: ±4σ ≈ ±275.
+        const double perValue = 0.25 * 4096.0 / (262124.0 * 0.12 + 20.0 * 1200.0);
+        const double dimChance = 1.0 / 64.0 + 0.12 * perValue;
+        EXPECT_NEAR((double)probe.pixels.size(), 262124.0 * dimChance + 20.0, 275.0) << seed;
+        EXPECT_TRUE(std::is_sorted(probe.pixels.begin(), probe.pixels.end()));
+        int bright = 0;
+        for (size_t k = 0; k < probe.pixels.size(); ++k) {
+            const uint32_t x = probe.pixels[k] % 512, y = probe.pixels[k] / 512;
+            if (value(x, y) > 1.0) {
+                ++bright;
+                EXPECT_EQ(probe.weights[k], 1.0);  // drawn with certainty
+            } else {
+                EXPECT_NEAR(probe.weights[k], 1.0 / dimChance, 1e-9);
             }
         }
+        EXPECT_EQ(bright, 20) << seed;
     }
-    EXPECT_EQ(probeLattice(512, 512, 0).stride, 8u);
-    EXPECT_NE(probeFrame(FrameParams{}, probeLattice(64, 64, 0)).seed, FrameParams{}.seed);
+    // Tiny images: every pixel.
+    const std::vector<AccumPixel> tiny = flatImage(5, 3, 1.0, [](uint32_t, uint32_t) { return 0.5; });
+    EXPECT_EQ(designProbe(tiny, 5, 3, 4).pixels.size(), 15u);
+    EXPECT_TRUE(designProbe({}, 0, 0, 4).empty());
+    EXPECT_NE(probeFrame(FrameParams{}).seed, FrameParams{}.seed);
+    EXPECT_TRUE(probeFrame(FrameParams{}).target.probe);
 }
 
 // Image and probe pixels drawn independently from N(mu, sigma²) per channel: the estimate recovers sigma.
 TEST(ErrorProbe, EstimateRecoversAKnownVariance) {
     const uint32_t width = 256, height = 256;
-    const PixelLattice lattice = probeLattice(width, height, 3);
     std::mt19937 rng(11);
     std::normal_distribution<double> noise(0.0, 0.05);
     auto sample = [&](AccumPixel& p, double mu, double passes) {
         p.count = passes;
         for (int c = 0; c < 3; ++c) p.sum[c] = passes * (mu + noise(rng));
     };
-    std::vector<AccumPixel> image((size_t)width * height), probe((size_t)lattice.width * lattice.height);
-    for (uint32_t y = 0; y < height; ++y)
-        for (uint32_t x = 0; x < width; ++x) sample(image[(size_t)y * width + x], 0.1 + 0.8 * x / width, 4.0);
-    for (uint32_t j = 0; j < lattice.height; ++j)
-        for (uint32_t i = 0; i < lattice.width; ++i)
-            sample(probe[(size_t)j * lattice.width + i], 0.1 + 0.8 * (lattice.offsetX + lattice.stride * i) / width, 4.0);
-    const ErrorEstimate e = estimateErrorWithProbe(image, width, lattice, probe);
+    auto mu = [&](uint32_t i) { return 0.1 + 0.8 * (i % width) / width; };
+    std::vector<AccumPixel> image((size_t)width * height);
+    for (uint32_t i = 0; i < width * height; ++i) sample(image[i], mu(i), 4.0);
+    const ErrorProbe probe = designProbe(image, width, height, 3);
+    std::vector<AccumPixel> probeAccum(probe.pixels.size());
+    for (size_t k = 0; k < probe.pixels.size(); ++k) sample(probeAccum[k], mu(probe.pixels[k]), 4.0);
+    const ErrorEstimate e = estimateErrorWithProbe(image, probe, probeAccum);
     ASSERT_TRUE(e.available);
-    EXPECT_EQ(e.probePixels, lattice.width * lattice.height);
-    // n = 3·1024 values of σ²χ²₁: the MSE estimate's relative deviation is √(2/n) = 2.6 %, so 10 % on the
-    // RMSE (20 % on the MSE) is a 7σ bound.
+    EXPECT_EQ(e.probePixels, probe.pixels.size());
+    // ~5000 pixels, 3 channels of σ²χ²₁ weighted by 1/π within a factor ~2: the MSE estimate's relative
+    // deviation is ~2 %, so 10 % on the RMSE (20 % on the MSE) is a many-σ bound.
     EXPECT_NEAR(e.rmse, 0.05, 0.005);
     EXPECT_NEAR(e.meanValue, 0.5, 0.01);
     EXPECT_NEAR(e.relError, 0.1, 0.01);
 
     // A probe that did not render the image's passes gives no estimate.
-    probe[5].count = 3.0;
-    EXPECT_FALSE(estimateErrorWithProbe(image, width, lattice, probe).available);
-    EXPECT_FALSE(estimateErrorWithProbe(image, width, lattice, {}).available);
+    probeAccum[5].count = 3.0;
+    EXPECT_FALSE(estimateErrorWithProbe(image, probe, probeAccum).available);
+    EXPECT_FALSE(estimateErrorWithProbe(image, probe, {}).available);
 }
 
 const char* kAreaLightScene =
@@ -81,8 +100,8 @@ const char* kAreaLightScene =
     "AreaLight\n{\n    Position 0.5 4 0\n    Direction 0 -1 0\n    Width 3\n    Height 3\n    Subdivision 4 4\n"
     "    Color 1 1 1\n}\n";
 
-// The probe's pixel (i, j) is bit for bit the image pixel (offsetX + stride·i, offsetY + stride·j) of a render
-// with the probe's seed: the lattice maps the right pixels and the probe is the image's own estimator.
+// The probe's pixel k is bit for bit image pixel pixels[k] of a render with the probe's seed: the backend maps
+// the right pixels and the probe is the image's own estimator.
 class ErrorProbeOn : public ::testing::TestWithParam<BackendChoice> {};
 
 TEST_P(ErrorProbeOn, BackendRendersTheLatticePixelsWithTheProbeSeed) {
@@ -107,34 +126,33 @@ TEST_P(ErrorProbeOn, BackendRendersTheLatticePixelsWithTheProbeSeed) {
         RenderLimits limits;
         limits.passes = 3;
         limits.cyclePasses = fullCyclePasses(arrays, StrataBlocks::ones());
-        limits.probe = probeLattice(w, h, 9);
-        backend->resizeProbe(limits.probe);
-        renderProgressive(*backend, frame, limits);
+        limits.errorProbe = true;
+        const RenderOutcome outcome = renderProgressive(*backend, frame, limits);
+        ASSERT_FALSE(outcome.probe.empty());
         std::vector<AccumPixel> probe;
         backend->readProbe(probe);
 
         // The same passes as an image, with the probe's seed.
         backend->reset();
-        FrameParams asImage = probeFrame(frame, limits.probe);
-        asImage.lattice = PixelLattice{};
+        FrameParams asImage = probeFrame(frame);
+        asImage.target = PassPixels{};
         RenderLimits plain = limits;
-        plain.probe = PixelLattice{};
+        plain.errorProbe = false;
         renderProgressive(*backend, asImage, plain);
         std::vector<AccumPixel> image;
         backend->readAccumulation(image);
-        ASSERT_EQ(probe.size(), (size_t)limits.probe.width * limits.probe.height);
-        for (uint32_t j = 0; j < limits.probe.height; ++j)
-            for (uint32_t i = 0; i < limits.probe.width; ++i) {
-                const AccumPixel& p = probe[(size_t)j * limits.probe.width + i];
-                const AccumPixel& q = image[(size_t)(limits.probe.offsetY + limits.probe.stride * j) * w +
-                                            limits.probe.offsetX + limits.probe.stride * i];
-                ASSERT_EQ(p.count, 3.0);
-                for (int c = 0; c < 3; ++c) ASSERT_EQ(p.sum[c], q.sum[c]) << i << "," << j;
-            }
+        ASSERT_EQ(probe.size(), outcome.probe.pixels.size());
+        for (size_t k = 0; k < probe.size(); ++k) {
+            const AccumPixel& q = image[outcome.probe.pixels[k]];
+            ASSERT_EQ(probe[k].count, 3.0);
+            for (int c = 0; c < 3; ++c) ASSERT_EQ(probe[k].sum[c], q.sum[c]) << k;
+        }
 
         // A frame whose pixels are not the allocated accumulation's is refused, not rendered out of bounds.
-        FrameParams wrong = probeFrame(frame, probeLattice(w + 40, h, 9));
-        EXPECT_THROW(backend->renderPasses(wrong, 0, 1), std::logic_error);
+        EXPECT_THROW(backend->renderPasses(makeFrameParams(scene, w + 40, h, 9), 0, 1), std::logic_error);
+        EXPECT_THROW(backend->resizeProbe({0u, w * h}), std::logic_error);
+        backend->resize(w, h);  // forgets the probe's pixels, which were the old image's
+        EXPECT_THROW(backend->renderPasses(probeFrame(frame), 0, 1), std::logic_error);
     }
 }
 

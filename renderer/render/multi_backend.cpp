@@ -87,8 +87,8 @@ bool MultiBackend::hasProbe() const {
     return true;
 }
 
-void MultiBackend::resizeProbe(const PixelLattice& lattice) {
-    forEach([&](size_t i) { backends_[i]->resizeProbe(lattice); });
+void MultiBackend::resizeProbe(const std::vector<uint32_t>& pixels) {
+    forEach([&](size_t i) { backends_[i]->resizeProbe(pixels); });
 }
 
 void MultiBackend::readProbe(std::vector<AccumPixel>& out) { readSum(&Backend::readProbe, out); }

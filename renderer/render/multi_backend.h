@@ -27,7 +27,7 @@ public:
     void readAccumulation(std::vector<AccumPixel>& out) override;
     // The probe as the image: every backend holds one, passes split the same way, read as their sum.
     bool hasProbe() const override;
-    void resizeProbe(const PixelLattice& lattice) override;
+    void resizeProbe(const std::vector<uint32_t>& pixels) override;
     void readProbe(std::vector<AccumPixel>& out) override;
     uint64_t raysTraced() const override;
     using Backend::traceRays;

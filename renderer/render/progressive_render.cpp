@@ -38,13 +38,12 @@ void renderPassRange(Backend& backend, const FrameParams& frame, uint32_t firstP
     backend.renderPasses(split, firstPass, count);
 }
 
-ErrorEstimate estimateRenderError(Backend& backend, const RenderLimits& limits, uint32_t width,
-                                  std::vector<AccumPixel>& accum) {
+ErrorEstimate estimateRenderError(Backend& backend, const ErrorProbe& probe, std::vector<AccumPixel>& accum) {
     backend.readAccumulation(accum);
-    if (!limits.probe.isProbe()) return estimateError(accum);
-    std::vector<AccumPixel> probe;
-    backend.readProbe(probe);
-    return estimateErrorWithProbe(accum, width, limits.probe, probe);
+    if (probe.empty()) return estimateError(accum);
+    std::vector<AccumPixel> probeAccum;
+    backend.readProbe(probeAccum);
+    return estimateErrorWithProbe(accum, probe, probeAccum);
 }
 
 RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, const RenderLimits& limits,
@@ -54,8 +53,8 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
     auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
     const uint32_t maxPasses = std::min(limits.passes, kMaxProgressivePasses);
-    const bool probed = limits.probe.isProbe();
-    const FrameParams probe = probed ? probeFrame(frame, limits.probe) : FrameParams{};
+    bool probed = limits.errorProbe;
+    const FrameParams probe = probeFrame(frame);
     const bool targeted = limits.targetError > 0.0 && (probed || splitsHalves(limits.cyclePasses));
     // The probe's estimate holds at any pass count; the halves' where they are balanced.
     const uint64_t checkStep = probed ? 1u : 2ull * std::max(limits.cyclePasses, 1u);
@@ -69,12 +68,18 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
         const uint32_t count =
             (uint32_t)std::min<uint64_t>({batch, maxPasses - out.passes, nextCheck - out.passes});
         renderPassRange(backend, frame, limits.firstPass + out.passes, count, limits.cyclePasses);
+        if (probed && out.probe.empty()) {  // drawn from the first batch's image, independent of its own passes
+            backend.readAccumulation(accum);
+            out.probe = designProbe(accum, frame.camera.width, frame.camera.height, frame.seed);
+            if (out.probe.empty()) probed = false;  // nothing drawn (a 1-pixel image, by chance): the halves
+            else backend.resizeProbe(out.probe.pixels);
+        }
         if (probed) renderPassRange(backend, probe, limits.firstPass + out.passes, count, limits.cyclePasses);
         out.passes += count;
         const double t = elapsed();
 
         if (targeted && out.passes >= nextCheck) {
-            const ErrorEstimate e = estimateRenderError(backend, limits, frame.camera.width, accum);
+            const ErrorEstimate e = estimateRenderError(backend, out.probe, accum);
             out.estimatedRelError = e.relError;
             ++out.errorChecks;
             if (e.available && e.relError <= limits.targetError) {

@@ -9,6 +9,7 @@
 
 #include "backends/backend.h"
 #include "render/error_estimate.h"
+#include "render/error_probe.h"
 #include "render/pass_range.h"
 #include "render/strata_plan.h"
 
@@ -43,9 +44,9 @@ struct RenderLimits {
     // (and a stratified image is at its best). 0: no halves, and no target error without a probe.
     uint32_t cyclePasses = 0;
     uint32_t firstPass = 0;  // the global index of the first pass (a partial render of passes [first, first + passes))
-    // The error probe's lattice (render/error_probe.h; stride 0: none, the backend's resizeProbe made it): every
-    // batch renders it beside the image, and the target error is checked from the first pass on.
-    PixelLattice probe{};
+    // Estimate the error with a probe (render/error_probe.h; the backend must have one): drawn after the first
+    // pass, then rendered beside the image in every batch; the target error is checked from the first pass.
+    bool errorProbe = false;
     // When set and true (a signal handler sets it), the render stops after the current batch.
     const std::atomic<bool>* stop = nullptr;
 };
@@ -63,12 +64,12 @@ struct RenderOutcome {
     double estimatedRelError = NAN;  // at the last target-error check (NaN when none was made)
     uint32_t errorChecks = 0;        // accumulation reads made for the target error
     bool reachedTarget = false;
+    ErrorProbe probe;  // with limits.errorProbe: the probe drawn after the first pass
 };
 
-// The render's error now: from the probe when limits.probe has one, otherwise from the halves. Leaves the
-// image's accumulation in `accum`.
-ErrorEstimate estimateRenderError(Backend& backend, const RenderLimits& limits, uint32_t width,
-                                  std::vector<AccumPixel>& accum);
+// The render's error now: from the probe when there is one, otherwise from the halves. Leaves the image's
+// accumulation in `accum`.
+ErrorEstimate estimateRenderError(Backend& backend, const ErrorProbe& probe, std::vector<AccumPixel>& accum);
 
 RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, const RenderLimits& limits,
                                 const std::function<void(const RenderProgress&)>& onProgress = {});

@@ -20,7 +20,7 @@ struct Tile {
 };
 
 // Passes inside the tile keep its data in cache; per pixel they still add in pass order. The tile is in the
-// accumulation's pixels (frame.lattice). Returns rays.
+// accumulation's pixels (frame.target). Returns rays.
 template <FeatureMask F>
 uint64_t renderTilePasses(const SceneView& scene, const FrameParams& frame, Tile tile, uint32_t firstPass,
                           uint32_t passCount, AccumPixel* accum) {
@@ -29,7 +29,9 @@ uint64_t renderTilePasses(const SceneView& scene, const FrameParams& frame, Tile
         for (uint32_t y = tile.y0; y < tile.y1; ++y) {
             for (uint32_t x = tile.x0; x < tile.x1; ++x) {
                 uint32_t sampleRays = 0;
-                const Vec3 c = renderSample<F>(scene, frame, frame.pixelX(x), frame.pixelY(y), pass, sampleRays);
+                uint32_t px, py;
+                if (!frame.imagePixel(x, y, px, py)) continue;
+                const Vec3 c = renderSample<F>(scene, frame, px, py, pass, sampleRays);
                 accum[(size_t)y * frame.accumWidth() + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
                 rays += sampleRays;
             }
@@ -75,6 +77,8 @@ public:
         width_ = width;
         height_ = height;
         accum_.assign((size_t)width * height, AccumPixel{});
+        probePixels_.clear();  // its pixels were the old image's
+        probe_.clear();
         rays_ = 0;
     }
     void reset() override {
@@ -83,16 +87,20 @@ public:
         rays_ = 0;
     }
     bool hasProbe() const override { return true; }
-    void resizeProbe(const PixelLattice& lattice) override {
-        probeLattice_ = lattice;
-        probe_.assign((size_t)lattice.width * lattice.height, AccumPixel{});
+    void resizeProbe(const std::vector<uint32_t>& pixels) override {
+        checkProbePixels(pixels, width_, height_);
+        probePixels_ = pixels;
+        probe_.assign((pixels.size() + kProbeRow - 1) / kProbeRow * kProbeRow, AccumPixel{});
     }
-    void readProbe(std::vector<AccumPixel>& out) override { out = probe_; }
+    void readProbe(std::vector<AccumPixel>& out) override {
+        out.assign(probe_.begin(), probe_.begin() + (ptrdiff_t)probePixels_.size());
+    }
 
-    void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override {
+    void renderPasses(const FrameParams& target, uint32_t firstPass, uint32_t passCount) override {
+        const FrameParams frame =
+            boundFrame(target, width_, height_, probePixels_.data(), (uint32_t)probePixels_.size());
         const uint32_t width = frame.accumWidth(), height = frame.accumHeight();
-        checkAccumulation(frame, width_, height_, probeLattice_);
-        AccumPixel* const accum = frame.lattice.isProbe() ? probe_.data() : accum_.data();
+        AccumPixel* const accum = frame.target.probe ? probe_.data() : accum_.data();
         const uint32_t tilesX = (width + kTileSize - 1) / kTileSize;
         const uint32_t tilesY = (height + kTileSize - 1) / kTileSize;
         const uint32_t tileCount = tilesX * tilesY;
@@ -126,8 +134,8 @@ private:
     SceneView view_{};
     uint32_t width_ = 0, height_ = 0;
     std::vector<AccumPixel> accum_;
-    PixelLattice probeLattice_{};
-    std::vector<AccumPixel> probe_;
+    std::vector<uint32_t> probePixels_;
+    std::vector<AccumPixel> probe_;  // kProbeRow pixels a row, the last padded
     uint64_t rays_ = 0;
 };
 

@@ -182,6 +182,10 @@ public:
         TRAZO_CUDA_CHECK(cudaMalloc(&accum_, (size_t)width * height * sizeof(AccumPixel)));
         width_ = width;
         height_ = height;
+        probePixels_.assign(std::vector<uint32_t>{});  // its pixels were the old image's
+        cudaFree(probe_);
+        probe_ = nullptr;
+        probeCount_ = 0;
         reset();
     }
     void reset() override {
@@ -191,24 +195,27 @@ public:
         TRAZO_CUDA_CHECK(cudaMemset(rayCounter_, 0, sizeof(unsigned long long)));
     }
     bool hasProbe() const override { return true; }
-    void resizeProbe(const PixelLattice& lattice) override {
+    void resizeProbe(const std::vector<uint32_t>& pixels) override {
+        checkProbePixels(pixels, width_, height_);
         useDevice();
         cudaFree(probe_);
         probe_ = nullptr;
-        probeLattice_ = PixelLattice{};
-        TRAZO_CUDA_CHECK(cudaMalloc(&probe_, (size_t)lattice.width * lattice.height * sizeof(AccumPixel)));
-        probeLattice_ = lattice;
-        TRAZO_CUDA_CHECK(cudaMemset(probe_, 0, probePixelCount() * sizeof(AccumPixel)));
+        probeCount_ = 0;
+        const size_t padded = (pixels.size() + kProbeRow - 1) / kProbeRow * kProbeRow;
+        TRAZO_CUDA_CHECK(cudaMalloc(&probe_, padded * sizeof(AccumPixel)));
+        TRAZO_CUDA_CHECK(cudaMemset(probe_, 0, padded * sizeof(AccumPixel)));
+        probePixels_.assign(pixels);
+        probeCount_ = (uint32_t)pixels.size();
     }
     void readProbe(std::vector<AccumPixel>& out) override {
         useDevice();
-        out.resize(probePixelCount());
-        TRAZO_CUDA_CHECK(cudaMemcpy(out.data(), probe_, probePixelCount() * sizeof(AccumPixel), cudaMemcpyDeviceToHost));
+        out.resize(probeCount_);
+        TRAZO_CUDA_CHECK(cudaMemcpy(out.data(), probe_, probeCount_ * sizeof(AccumPixel), cudaMemcpyDeviceToHost));
     }
-    void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override {
+    void renderPasses(const FrameParams& target, uint32_t firstPass, uint32_t passCount) override {
         useDevice();
-        checkAccumulation(frame, width_, height_, probeLattice_);
-        AccumPixel* const accum = frame.lattice.isProbe() ? probe_ : accum_;
+        const FrameParams frame = boundFrame(target, width_, height_, probePixels_.data(), probeCount_);
+        AccumPixel* const accum = frame.target.probe ? probe_ : accum_;
         const dim3 block(kPassBlockX, kPassBlockY);
         const dim3 grid((frame.accumWidth() + block.x - 1) / block.x, (frame.accumHeight() + block.y - 1) / block.y);
         const auto launch = kLaunchVariants[sampleVariantFor(view_.features)];
@@ -266,7 +273,7 @@ public:
 
 private:
     size_t pixelCount() const { return (size_t)width_ * height_; }
-    size_t probePixelCount() const { return (size_t)probeLattice_.width * probeLattice_.height; }
+    size_t probePixelCount() const { return (size_t)(probeCount_ + kProbeRow - 1) / kProbeRow * kProbeRow; }
     void useDevice() const { TRAZO_CUDA_CHECK(cudaSetDevice(deviceIndex_)); }
 
     int deviceIndex_ = 0;
@@ -281,8 +288,9 @@ private:
     DeviceArray<RayQuery> queries_;  // traceRays' buffers, kept for the next call
     DeviceArray<RayAnswer> hits_;
     AccumPixel* accum_ = nullptr;
+    DeviceArray<uint32_t> probePixels_;  // resizeProbe's list; the probe's accumulation, kProbeRow a row:
     AccumPixel* probe_ = nullptr;
-    PixelLattice probeLattice_{};
+    uint32_t probeCount_ = 0;
     unsigned long long* rayCounter_ = nullptr;
     uint32_t width_ = 0, height_ = 0;
     std::unique_ptr<CudaGlDisplay, void (*)(CudaGlDisplay*)> glDisplay_{nullptr, destroyCudaGlDisplay};

@@ -18,8 +18,9 @@ __global__ void __launch_bounds__(kPassBlockX* kPassBlockY, TRAZO_CUDA_PASS_MIN_
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
     const uint32_t y = blockIdx.y * blockDim.y + threadIdx.y;
     uint32_t rays = 0;
-    if (x < frame.accumWidth() && y < frame.accumHeight()) {  // accumulation pixels: the image's or the probe's
-        const Vec3 c = renderSample<F>(scene, frame, frame.pixelX(x), frame.pixelY(y), pass, rays);
+    uint32_t px, py;  // accumulation pixel (x, y) is image pixel (px, py): the image's own, or the probe's list
+    if (x < frame.accumWidth() && y < frame.accumHeight() && frame.imagePixel(x, y, px, py)) {
+        const Vec3 c = renderSample<F>(scene, frame, px, py, pass, rays);
         accum[(size_t)y * frame.accumWidth() + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
     }
     // One atomic per warp for the ray count.
