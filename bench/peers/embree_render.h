@@ -117,13 +117,12 @@ inline Surface cameraHit1(const RenderJob& job, RTCIntersectContext* ctx, int px
     return surfaceAt(job, dir, rh.hit.geomID, rh.hit.primID, rh.ray.tfar, Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
 }
 
-// Kd·(N·L)·C of the light point X if nothing is in between; false on the far side of N (no shadow ray then).
-inline bool unshadowedTerm(const Surface& s, Vec3 x, Vec3 color, Vec3& term) {
-    const Vec3 toLight = x - s.p;
-    const float cosine = trazo::dot(s.n, toLight);
-    if (cosine <= 0.0f) return false;
-    term = s.kd * color * (cosine / trazo::length(toLight));
-    return true;
+// Whether light from X - P (toLight) reaches the side of N the viewer sees; if not, no shadow ray is traced.
+inline bool facesLight(const Surface& s, Vec3 toLight) { return !(trazo::dot(s.n, toLight) <= 0.0f); }
+
+// Kd·(N·L)·C of a light point at P + toLight, if nothing is in between.
+inline Vec3 unshadowedTerm(const Surface& s, Vec3 toLight, Vec3 color) {
+    return s.kd * color * (trazo::dot(s.n, toLight) / trazo::length(toLight));
 }
 
 // The pixel's light sum: each point light, then each area light's cells (K jittered points per cell) averaged.
@@ -153,14 +152,16 @@ inline int termsPerPixel(const RenderJob& job) {
     return n;
 }
 
-// sumLights's sum of terms already known, in its order and grouping (the stream mode's second pass).
-inline Vec3 sumTerms(const RenderJob& job, const Vec3* term) {
+// sumLights's sum again, in its order and grouping, from term(C), which gives the next term of a light of
+// colour C (the stream mode's second pass, once the shadow rays are traced).
+template <class Term>
+Vec3 sumTerms(const RenderJob& job, Term&& term) {
     Vec3 sum(0.0f);
-    for (size_t l = 0; l < job.scene->pointLights.size(); ++l) sum += *term++;
+    for (const trazo::PointLight& l : job.scene->pointLights) sum += term(l.color);
     for (const AreaLightGrid& g : *job.grids) {
         const int n = g.cellsU * g.cellsV * job.samplesPerCell;
         Vec3 lightSum(0.0f);
-        for (int k = 0; k < n; ++k) lightSum += *term++;
+        for (int k = 0; k < n; ++k) lightSum += term(g.color);
         sum += lightSum / float(n);
     }
     return sum;

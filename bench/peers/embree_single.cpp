@@ -30,10 +30,10 @@ Vec3 shadePixel(const RenderJob& job, int px, int py, uint64_t& rays) {
     ++rays;
     if (!s.lit) return s.color;
     return sumLights(job, px, py, [&](Vec3 x, Vec3 color) {
-        Vec3 term;
-        if (!unshadowedTerm(s, x, color, term)) return Vec3(0.0f);
+        const Vec3 toLight = x - s.p;
+        if (!facesLight(s, toLight)) return Vec3(0.0f);
         ++rays;
-        return occludedSegment(job.rtc, s.p, x) ? Vec3(0.0f) : term;
+        return occludedSegment(job.rtc, s.p, x) ? Vec3(0.0f) : unshadowedTerm(s, toLight, color);
     });
 }
 

@@ -99,6 +99,10 @@ public:
     }
 
     bool occluded(int i) const { return (kind_ == ShadowStream::OneM ? aos_[i].tfar : soa_[8][i]) < 0.0f; }
+    Vec3 direction(int i) const {  // X - P, as add() stored it
+        return kind_ == ShadowStream::OneM ? Vec3(aos_[i].dir_x, aos_[i].dir_y, aos_[i].dir_z)
+                                           : Vec3(soa_[4][i], soa_[5][i], soa_[6][i]);
+    }
 
 private:
     static constexpr int kFloats = 9;  // org x y z, tnear, dir x y z, time, tfar: RTCRayNp's float arrays
@@ -121,8 +125,7 @@ void renderTilesStream(RenderJob& job) {
     if (job.coherentShadows) shadowCtx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     Surface surface[kTilePixels];
     bool inside[kTilePixels];
-    std::vector<Vec3> terms((size_t)kTilePixels * perPixel);  // each pixel's terms, unshadowed until traced
-    std::vector<int> rayOfTerm(terms.size());                  // its shadow ray, -1: none (the far side)
+    std::vector<int> rayOfTerm((size_t)kTilePixels * perPixel);  // each pixel's terms' shadow rays, -1: none
     ShadowRays shadows(job.shadowStream);
     uint64_t rays = 0;
     for (int tile; (tile = job.nextTile++) < tilesX * tilesY;) {
@@ -141,11 +144,10 @@ void renderTilesStream(RenderJob& job) {
             if (!inside[i] || !surface[i].lit) continue;
             const Surface& s = surface[i];
             size_t k = (size_t)i * perPixel;
-            sumLights(job, x0 + kMorton.x[i], y0 + kMorton.y[i], [&](Vec3 x, Vec3 color) {
-                Vec3 term(0.0f);
-                rayOfTerm[k] = unshadowedTerm(s, x, color, term) ? shadows.size() : -1;
-                if (rayOfTerm[k] >= 0) shadows.add(s.p, x);
-                terms[k++] = term;
+            sumLights(job, x0 + kMorton.x[i], y0 + kMorton.y[i], [&](Vec3 x, Vec3) {
+                const bool faces = facesLight(s, x - s.p);
+                rayOfTerm[k++] = faces ? shadows.size() : -1;
+                if (faces) shadows.add(s.p, x);
                 return Vec3(0.0f);
             });
         }
@@ -159,10 +161,11 @@ void renderTilesStream(RenderJob& job) {
                 pixel = surface[i].color;
                 continue;
             }
-            const size_t first = (size_t)i * perPixel;
-            for (size_t k = first; k < first + perPixel; ++k)
-                if (rayOfTerm[k] >= 0 && shadows.occluded(rayOfTerm[k])) terms[k] = Vec3(0.0f);
-            pixel = sumTerms(job, &terms[first]);
+            const int* ray = &rayOfTerm[(size_t)i * perPixel];
+            pixel = sumTerms(job, [&](Vec3 color) {
+                const int r = *ray++;
+                return r < 0 || shadows.occluded(r) ? Vec3(0.0f) : unshadowedTerm(surface[i], shadows.direction(r), color);
+            });
         }
     }
     job.rays += rays;
