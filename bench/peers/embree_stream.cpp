@@ -76,12 +76,13 @@ public:
             r.tfar = kShadowTfar;
             r.mask = kMaskOccluder;
         } else {
-            if ((size_t)count_ == soa_[0].size()) {
-                for (std::vector<float>& a : soa_) a.resize(std::max<size_t>(1024, 2 * a.size()));
+            if ((size_t)count_ == soa_[0].size()) {  // tnear, time, mask, id and flags are the same for all
+                for (std::vector<float>& a : soa_) a.resize(std::max<size_t>(1024, 2 * a.size()), 0.0f);
                 mask_.resize(soa_[0].size(), kMaskOccluder), zeros_.resize(soa_[0].size(), 0u);
             }
-            const float v[kFloats] = {from.x, from.y, from.z, 0.0f, d.x, d.y, d.z, 0.0f, kShadowTfar};
-            for (int f = 0; f < kFloats; ++f) soa_[f][count_] = v[f];
+            soa_[0][count_] = from.x, soa_[1][count_] = from.y, soa_[2][count_] = from.z;
+            soa_[4][count_] = d.x, soa_[5][count_] = d.y, soa_[6][count_] = d.z;
+            soa_[8][count_] = kShadowTfar;  // Embree sets it to -inf when occluded
         }
         ++count_;
     }
