@@ -5,7 +5,7 @@
 // thesis's image. The scene is read by Trazo's own reader; the tracing and shading are Embree and these files.
 //   --mode single (default): rtcIntersect1 / rtcOccluded1, one ray at a time (embree_single.cpp);
 //   --mode stream: camera rays in rtcIntersect16 packets over 8×8 tiles and each tile's shadow rays in one
-//     rtcOccludedNp stream (embree_stream.cpp); --packet 1|4|8|16 (1: rtcIntersect1), --shadow-stream np|1m and
+//     rtcOccluded1M stream (embree_stream.cpp); --packet 1|4|8|16 (1: rtcIntersect1), --shadow-stream 1m|np and
 //     --coherent camera|shadow|both|none are its alternatives. Both modes write the same image for one seed.
 //
 // Geometry is what a fair Embree renderer would build: boxes as 12 triangles each (one triangle geometry),
@@ -43,7 +43,7 @@ struct Options {
     int width = 0, height = 0;  // 0: the scene's
     bool stream = false;
     int packet = 16;
-    ShadowStream shadowStream = ShadowStream::Np;
+    ShadowStream shadowStream = ShadowStream::OneM;
     std::string coherent = "both";
 };
 
@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
     if (!parseOptions(argc, argv, opt)) {
         std::fprintf(stderr, "usage: embree_render SCENE [--mode single|stream] [--threads N] [--seed S] "
                              "[--samples-per-cell K] [--width W --height H] [-o OUT.pfm]\n"
-                             "  stream mode: [--packet 1|4|8|16] [--shadow-stream np|1m] [--coherent camera|shadow|both|none]\n");
+                             "  stream mode: [--packet 1|4|8|16] [--shadow-stream 1m|np] [--coherent camera|shadow|both|none]\n");
         return 2;
     }
     trazo::Diagnostics diags;

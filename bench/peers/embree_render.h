@@ -53,7 +53,7 @@ struct RenderJob {
     float tanHalfFovY;
     // The stream mode's choices.
     int packet = 16;  // camera rays per rtcIntersect4/8/16 call; 1: rtcIntersect1 each
-    ShadowStream shadowStream = ShadowStream::Np;
+    ShadowStream shadowStream = ShadowStream::OneM;
     bool coherentCamera = true, coherentShadows = true;
     std::vector<Vec3>* image;
     std::atomic<int> nextTile{0};

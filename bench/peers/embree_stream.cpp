@@ -1,9 +1,9 @@
 // embree_render --mode stream: the form an Embree expert writes. Over 8×8-pixel tiles, the camera rays go
 // as rtcIntersect16 (or 8, 4) packets of 4×4 (4×2, 2×2) pixels, then every shadow ray of the tile (up to
-// 64 pixels × light points, 6 400 for a 10×10 light) goes to Embree in one stream call, rtcOccludedNp
-// (SoA) or rtcOccluded1M (an array of RTCRay), under RTC_INTERSECT_CONTEXT_FLAG_COHERENT. The shading is
-// the single mode's own (embree_render.h): the light points are drawn in the same order from the same
-// per-pixel stream and the terms summed in the same order, so the image is the single mode's.
+// 64 pixels × light points, 6 400 for a 10×10 light) goes to Embree in one stream call, rtcOccluded1M (an
+// array of RTCRay; rtcOccludedNp, SoA, measured a few % slower), under RTC_INTERSECT_CONTEXT_FLAG_COHERENT.
+// The shading is the single mode's own (embree_render.h): the light points are drawn in the same order from
+// the same per-pixel stream and the terms summed in the same order, so the image is the single mode's.
 #include <algorithm>
 
 #include "embree_render.h"
