@@ -1,15 +1,20 @@
-// embree_render: a plain Embree 3 single-ray renderer of a Trazo scene of spheres, boxes and lights (host).
+// embree_render: a plain Embree 3 renderer of a Trazo scene of spheres, boxes and lights (host), in two forms.
 // The peer a user would write instead of Trazo: Lambertian shading (Kd·(N·L)·C, no falloff, SPEC §5's
 // lights), one camera ray through each pixel centre, and for an area light one jittered point in each of
 // its cellsU×cellsV cells per pixel (K points per cell with --samples-per-cell K), the estimator of the
-// thesis's image. The scene is read by Trazo's own reader; the tracing and shading are Embree and this file.
+// thesis's image. The scene is read by Trazo's own reader; the tracing and shading are Embree and these files.
+//   --mode single (default): rtcIntersect1 / rtcOccluded1, one ray at a time (embree_single.cpp);
+//   --mode stream: camera rays in rtcIntersect16 packets over 8×8 tiles and each tile's shadow rays in one
+//     rtcOccluded1M stream (embree_stream.cpp); --packet 1|4|8|16 (1: rtcIntersect1), --shadow-stream 1m|np and
+//     --coherent camera|shadow|both|none are its alternatives. Both modes write the same image for one seed.
 //
 // Geometry is what a fair Embree renderer would build: boxes as 12 triangles each (one triangle geometry),
 // spheres as Embree's native RTC_GEOMETRY_TYPE_SPHERE_POINT (exact ray–sphere tests, no tessellation),
 // and the visible area-light rectangles as two triangles each in a geometry with its own ray mask, so
 // camera rays see them and shadow rays do not (SPEC §5: lights cast no shadow).
 //
-// Usage: embree_render SCENE [--threads N] [--seed S] [--samples-per-cell K] [--width W --height H] -o OUT.pfm
+// Usage: embree_render SCENE [--mode single|stream] [--threads N] [--seed S] [--samples-per-cell K]
+//                            [--width W --height H] -o OUT.pfm
 #include <embree3/rtcore.h>
 
 #include <algorithm>
@@ -18,19 +23,17 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "embree_render.h"
 #include "image/image_writer.h"
 #include "scene/scene_reader.h"
 
+namespace embree_peer {
 namespace {
-
-using trazo::Vec3;
-
-constexpr unsigned kMaskOccluder = 1, kMaskLight = 2;
-constexpr int kTile = 16;
 
 struct Options {
     std::string scene, out = "embree.pfm";
@@ -38,32 +41,10 @@ struct Options {
     uint64_t seed = 1;
     int samplesPerCell = 1;
     int width = 0, height = 0;  // 0: the scene's
-};
-
-struct AreaLightGrid {
-    Vec3 center, u, v;  // u, v: full edge vectors (Width·û, Height·v̂)
-    Vec3 color;
-    int cellsU, cellsV;
-};
-
-// What the shading needs, indexed by Embree's geomID and primID.
-struct ShadingTables {
-    std::vector<Vec3> boxKd;     // per box (primID / 12)
-    std::vector<Vec3> sphereKd;  // per sphere (primID)
-    std::vector<Vec3> lightColor;  // per area light (primID / 2)
-    unsigned boxGeom = RTC_INVALID_GEOMETRY_ID, sphereGeom = RTC_INVALID_GEOMETRY_ID,
-             lightGeom = RTC_INVALID_GEOMETRY_ID;
-};
-
-// SplitMix64: a per-pixel stream, so the image depends on the seed only, not on threads or tiles.
-struct PixelRng {
-    uint64_t state;
-    float next() {
-        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return float((z ^ (z >> 31)) >> 40) * (1.0f / 16777216.0f);
-    }
+    bool stream = false;
+    int packet = 16;
+    ShadowStream shadowStream = ShadowStream::OneM;
+    std::string coherent = "both";
 };
 
 bool parseOptions(int argc, char** argv, Options& o) {
@@ -77,6 +58,15 @@ bool parseOptions(int argc, char** argv, Options& o) {
         else if (a == "--samples-per-cell" && (v = value())) o.samplesPerCell = std::max(1, std::atoi(v));
         else if (a == "--width" && (v = value())) o.width = std::atoi(v);
         else if (a == "--height" && (v = value())) o.height = std::atoi(v);
+        else if (a == "--mode" && (v = value()) && (!std::strcmp(v, "single") || !std::strcmp(v, "stream")))
+            o.stream = !std::strcmp(v, "stream");
+        else if (a == "--packet" && (v = value()) && (!std::strcmp(v, "1") || !std::strcmp(v, "4") || !std::strcmp(v, "8") || !std::strcmp(v, "16")))
+            o.packet = std::atoi(v);
+        else if (a == "--shadow-stream" && (v = value()) && (!std::strcmp(v, "np") || !std::strcmp(v, "1m")))
+            o.shadowStream = !std::strcmp(v, "np") ? ShadowStream::Np : ShadowStream::OneM;
+        else if (a == "--coherent" && (v = value()) &&
+                 (!std::strcmp(v, "camera") || !std::strcmp(v, "shadow") || !std::strcmp(v, "both") || !std::strcmp(v, "none")))
+            o.coherent = v;
         else if (!a.empty() && a[0] != '-' && o.scene.empty()) o.scene = a;
         else return false;
     }
@@ -112,6 +102,8 @@ unsigned attachTriangles(RTCDevice device, RTCScene scene, const std::vector<Vec
     rtcReleaseGeometry(g);
     return id;
 }
+
+}  // namespace
 
 void buildEmbreeScene(const trazo::Scene& scene, RTCDevice device, RTCScene rtc, ShadingTables& tables,
                       std::vector<AreaLightGrid>& grids) {
@@ -160,105 +152,16 @@ void buildEmbreeScene(const trazo::Scene& scene, RTCDevice device, RTCScene rtc,
     rtcCommitScene(rtc);
 }
 
-// Everything a tile worker reads; the counters are the only shared writes.
-struct RenderJob {
-    const trazo::Scene* scene;
-    RTCScene rtc;
-    const ShadingTables* tables;
-    const std::vector<AreaLightGrid>* grids;
-    int width, height, samplesPerCell;
-    uint64_t seed;
-    Vec3 origin, forward, right, up;
-    float tanHalfFovY;
-    std::vector<Vec3>* image;
-    std::atomic<int> nextTile{0};
-    std::atomic<uint64_t> rays{0};
-};
-
-bool occludedSegment(RTCScene rtc, Vec3 from, Vec3 to) {
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    RTCRay r{};
-    r.org_x = from.x, r.org_y = from.y, r.org_z = from.z;
-    const Vec3 d = to - from;
-    r.dir_x = d.x, r.dir_y = d.y, r.dir_z = d.z;
-    r.tnear = 0.0f;
-    r.tfar = 1.0f - 1e-4f;  // d is unnormalised: t = 1 is the light point
-    r.mask = kMaskOccluder;
-    rtcOccluded1(rtc, &ctx, &r);
-    return r.tfar < 0.0f;
-}
-
-// Kd·(N·L)·C when the point X is visible from P (N faces the viewer); counts the shadow ray it traces.
-Vec3 lambertFrom(const RenderJob& job, Vec3 p, Vec3 n, Vec3 kd, Vec3 x, Vec3 color, uint64_t& rays) {
-    const Vec3 toLight = x - p;
-    const float cosine = trazo::dot(n, toLight);
-    if (cosine <= 0.0f) return Vec3(0.0f);  // no light reaches this side: no shadow ray either
-    ++rays;
-    if (occludedSegment(job.rtc, p, x)) return Vec3(0.0f);
-    return kd * color * (cosine / trazo::length(toLight));
-}
-
-Vec3 shadePixel(const RenderJob& job, int px, int py, uint64_t& rays) {
-    const float sx = (2.0f * (px + 0.5f) / job.width - 1.0f) * job.tanHalfFovY * job.width / job.height;
-    const float sy = (1.0f - 2.0f * (py + 0.5f) / job.height) * job.tanHalfFovY;
-    const Vec3 dir = trazo::normalize(job.forward + job.right * sx + job.up * sy);
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    RTCRayHit rh{};
-    rh.ray.org_x = job.origin.x, rh.ray.org_y = job.origin.y, rh.ray.org_z = job.origin.z;
-    rh.ray.dir_x = dir.x, rh.ray.dir_y = dir.y, rh.ray.dir_z = dir.z;
-    rh.ray.tfar = INFINITY;
-    rh.ray.mask = kMaskOccluder | kMaskLight;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(job.rtc, &ctx, &rh);
-    ++rays;
-    const ShadingTables& t = *job.tables;
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return job.scene->settings.backgroundColor;
-    if (rh.hit.geomID == t.lightGeom) return t.lightColor[rh.hit.primID / 2];
-    const Vec3 kd = rh.hit.geomID == t.boxGeom ? t.boxKd[rh.hit.primID / 12] : t.sphereKd[rh.hit.primID];
-    Vec3 n = trazo::normalize(Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
-    if (trazo::dot(n, dir) > 0.0f) n = -n;  // face the viewer (SPEC §5)
-    // Shadow rays start off the surface by an offset that scales with the hit point's magnitude.
-    const Vec3 hit = job.origin + dir * rh.ray.tfar;
-    const float scale = std::max({1.0f, std::fabs(hit.x), std::fabs(hit.y), std::fabs(hit.z)});
-    const Vec3 p = hit + n * (1e-4f * scale);
-
-    Vec3 sum(0.0f);
-    for (const trazo::PointLight& l : job.scene->pointLights) sum += lambertFrom(job, p, n, kd, l.position, l.color, rays);
-    PixelRng rng{job.seed * 0x100000001b3ull + (uint64_t)py * job.width + px};
-    for (const AreaLightGrid& g : *job.grids) {
-        Vec3 lightSum(0.0f);
-        for (int j = 0; j < g.cellsV; ++j)
-            for (int i = 0; i < g.cellsU; ++i)
-                for (int k = 0; k < job.samplesPerCell; ++k) {
-                    const float su = (i + rng.next()) / g.cellsU - 0.5f, sv = (j + rng.next()) / g.cellsV - 0.5f;
-                    lightSum += lambertFrom(job, p, n, kd, g.center + g.u * su + g.v * sv, g.color, rays);
-                }
-        sum += lightSum / float(g.cellsU * g.cellsV * job.samplesPerCell);
-    }
-    return sum;
-}
-
-void renderTiles(RenderJob& job) {
-    const int tilesX = (job.width + kTile - 1) / kTile, tilesY = (job.height + kTile - 1) / kTile;
-    uint64_t rays = 0;
-    for (int tile; (tile = job.nextTile++) < tilesX * tilesY;) {
-        const int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
-        for (int y = y0; y < std::min(y0 + kTile, job.height); ++y)
-            for (int x = x0; x < std::min(x0 + kTile, job.width); ++x)
-                (*job.image)[(size_t)y * job.width + x] = shadePixel(job, x, y, rays);
-    }
-    job.rays += rays;
-}
-
-}  // namespace
+}  // namespace embree_peer
 
 int main(int argc, char** argv) {
+    using namespace embree_peer;
+    using trazo::Vec3;
     Options opt;
     if (!parseOptions(argc, argv, opt)) {
-        std::fprintf(stderr, "usage: embree_render SCENE [--threads N] [--seed S] [--samples-per-cell K] "
-                             "[--width W --height H] [-o OUT.pfm]\n");
+        std::fprintf(stderr, "usage: embree_render SCENE [--mode single|stream] [--threads N] [--seed S] "
+                             "[--samples-per-cell K] [--width W --height H] [-o OUT.pfm]\n"
+                             "  stream mode: [--packet 1|4|8|16] [--shadow-stream 1m|np] [--coherent camera|shadow|both|none]\n");
         return 2;
     }
     trazo::Diagnostics diags;
@@ -290,12 +193,15 @@ int main(int argc, char** argv) {
     job.right = trazo::normalize(trazo::cross(job.forward, worldUp));
     job.up = trazo::cross(job.right, job.forward);
     job.tanHalfFovY = std::tan(0.5f * scene.camera.fovDegrees * 3.14159265f / 180.0f);
+    job.packet = opt.packet, job.shadowStream = opt.shadowStream;
+    job.coherentCamera = opt.coherent == "camera" || opt.coherent == "both";
+    job.coherentShadows = opt.coherent == "shadow" || opt.coherent == "both";
     std::vector<Vec3> image((size_t)job.width * job.height);
     job.image = &image;
 
     const auto renderStart = Clock::now();
     std::vector<std::thread> workers;
-    for (unsigned i = 0; i < opt.threads; ++i) workers.emplace_back(renderTiles, std::ref(job));
+    for (unsigned i = 0; i < opt.threads; ++i) workers.emplace_back(opt.stream ? renderTilesStream : renderTilesSingle, std::ref(job));
     for (std::thread& w : workers) w.join();
     const double renderSeconds = std::chrono::duration<double>(Clock::now() - renderStart).count();
 
@@ -307,8 +213,13 @@ int main(int argc, char** argv) {
         return 1;
     }
     const uint64_t rays = job.rays;
-    std::printf("build %.4f s, render %.4f s, %llu rays, %.2f Mrays/s, %d x %d, %u threads, %d sample(s) per cell\n",
+    const std::string mode = !opt.stream ? "single (rtcIntersect1, rtcOccluded1)"
+        : "stream (rtcIntersect" + std::to_string(opt.packet) + " over 8x8 tiles, " +
+              (opt.shadowStream == ShadowStream::Np ? "rtcOccludedNp" : "rtcOccluded1M") + " per tile, coherent " +
+              opt.coherent + ")";
+    std::printf("build %.4f s, render %.4f s, %llu rays, %.2f Mrays/s, %d x %d, %u threads, %d sample(s) per cell, "
+                "mode %s\n",
                 buildSeconds, renderSeconds, (unsigned long long)rays, rays / renderSeconds * 1e-6, job.width,
-                job.height, opt.threads, opt.samplesPerCell);
+                job.height, opt.threads, opt.samplesPerCell, mode.c_str());
     return 0;
 }
