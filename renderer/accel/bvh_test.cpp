@@ -517,6 +517,7 @@ TEST(BvhTraverse, SseChildTestMatchesScalarBitForBit) {
 TEST(BvhTraverse, NearestChildShortcutMatchesTheSort) {
 #if TRAZO_BVH_SSE
     CounterUniform u(51);
+    const std::vector<WideBvhNode> nodes(104);  // what the interior references 100–103 point to (prefetched)
     int twoChildren = 0, ties = 0;
     for (int trial = 0; trial < 100000; ++trial) {
         WideBvhNode node{};
@@ -530,7 +531,8 @@ TEST(BvhTraverse, NearestChildShortcutMatchesTheSort) {
         bvh_detail::StackEntry sorted[kBvhWidth], shortcut[kBvhWidth];
         int sortedSize = 0, shortcutSize = 0;
         const uint32_t a = bvh_detail::pushFartherChildren(node, mask, tEntry, sorted, sortedSize, kBvhWidth);
-        const uint32_t b = bvh_detail::nearestChildPushOthers(node, mask, tEntry, shortcut, shortcutSize, kBvhWidth);
+        const uint32_t b = bvh_detail::nearestChildPushOthers(nodes.data(), node, mask, tEntry, shortcut, shortcutSize,
+                                                                 kBvhWidth);
         ASSERT_EQ(a, b) << "trial " << trial;
         ASSERT_EQ(sortedSize, shortcutSize) << "trial " << trial;
         for (int i = 0; i < sortedSize; ++i) {

@@ -111,8 +111,8 @@ inline unsigned usedLanes(const WideBvhNode& node) {
 }
 #endif
 
-// Host: starts loading the interior children the ray entered while the nearest is being chosen; random rays
-// wait on memory for most of their time (bvh_bench, 1M-triangle sphere: random rays 0.51x → 0.59x of Embree).
+// Host: starts loading the interior children the ray entered before they are popped; random rays wait on
+// memory for most of their time (bvh_bench, 1M-triangle sphere: random rays 0.51x → 0.59x of Embree).
 TRAZO_HD void prefetchChildren(const WideBvhNode* nodes, const WideBvhNode& node, unsigned mask) {
 #if TRAZO_BVH_SSE
     for (unsigned interior = mask & ~leafOrEmptyLanes(node); interior; interior &= interior - 1) {
@@ -198,9 +198,10 @@ TRAZO_HD uint32_t pushFartherChildren(const WideBvhNode& node, unsigned mask, co
 
 // The same order without the sort where it is not needed: one child entered (the common case) is taken
 // without a push, two are ordered by one comparison (the insertion above puts the higher lane nearer on a
-// tie), three or four are sorted as above.
-TRAZO_HD uint32_t nearestChildPushOthers(const WideBvhNode& node, unsigned mask, const float tEntry[kBvhWidth],
-                                         StackEntry* stack, int& size, int capacity) {
+// tie), three or four are sorted as above. Prefetches the children entered (prefetchChildren), but on the
+// host not the one read next: its node test loads both its lines a few instructions later anyway.
+TRAZO_HD uint32_t nearestChildPushOthers(const WideBvhNode* nodes, const WideBvhNode& node, unsigned mask,
+                                         const float tEntry[kBvhWidth], StackEntry* stack, int& size, int capacity) {
 #if TRAZO_BVH_SSE
     mask &= usedLanes(node);
     if (!mask) return kBvhEmptyLane;
@@ -211,10 +212,12 @@ TRAZO_HD uint32_t nearestChildPushOthers(const WideBvhNode& node, unsigned mask,
     if (!(rest & (rest - 1))) {
         const bool aNearer = tEntry[a] < tEntry[b];
         const int nearer = aNearer ? a : b, farther = aNearer ? b : a;
+        prefetchChildren(nodes, node, 1u << farther);
         push(stack, size, capacity, StackEntry{node.child[farther], tEntry[farther]});
         return node.child[nearer];
     }
 #endif
+    prefetchChildren(nodes, node, mask);
     return pushFartherChildren(node, mask, tEntry, stack, size, capacity);
 }
 
@@ -262,8 +265,7 @@ TRAZO_HD bool traverseClosest(const WideBvhNode* nodes, const Ray& ray, float tM
             float tEntry[kBvhWidth];
             const unsigned mask = bvh_detail::intersectChildren(nodeRay, node, tMin, tMax, tEntry);
             if (mask) {
-                bvh_detail::prefetchChildren(nodes, node, mask);
-                ref = bvh_detail::nearestChildPushOthers(node, mask, tEntry, entries, size, capacity);
+                ref = bvh_detail::nearestChildPushOthers(nodes, node, mask, tEntry, entries, size, capacity);
                 if (ref != kBvhEmptyLane) continue;
             }
         } else {
@@ -309,7 +311,7 @@ TRAZO_HD bool traverseAny(const WideBvhNode* nodes, const Ray& ray, float tMin, 
             float tEntry[kBvhWidth];
             const unsigned mask = bvh_detail::intersectChildren(nodeRay, node, tMin, tMax, tEntry);
             if (mask) {
-                bvh_detail::prefetchChildren(nodes, node, mask);
+                bvh_detail::prefetchChildren(nodes, node, mask & (mask - 1));  // not the first lane: it is read next
                 ref = bvh_detail::pushLaterChildren(node, mask, entries, size, capacity);
                 if (ref != kBvhEmptyLane) continue;
             }
