@@ -223,18 +223,9 @@ TRAZO_HD uint32_t nearestChildPushOthers(const WideBvhNode* nodes, const WideBvh
 
 // For any-hit queries: pushes the children in `mask` but the first in lane order, returns the first. Sorting
 // by distance, as closest-hit does, made shadow rays slower (bvh_bench: 1M-triangle sphere, 0.49x → 0.65x
-// of Embree), since any occluder will do. The host walks the set bits only (callgrind, bvh_bench's shadow
-// rays: as many instructions, a third fewer mispredicted branches than the loop over four lanes); the order
-// in which the others are popped differs, which no answer depends on.
+// of Embree), since any occluder will do.
 TRAZO_HD uint32_t pushLaterChildren(const WideBvhNode& node, unsigned mask, uint32_t* stack, int& size,
                                     int capacity) {
-#if TRAZO_BVH_SSE
-    mask &= usedLanes(node);
-    if (!mask) return kBvhEmptyLane;
-    for (unsigned later = mask & (mask - 1); later; later &= later - 1)
-        push(stack, size, capacity, node.child[__builtin_ctz(later)]);
-    return node.child[__builtin_ctz(mask)];
-#else
     uint32_t first = kBvhEmptyLane;
     for (int lane = kBvhWidth - 1; lane >= 0; --lane) {
         if (!(mask & (1u << lane)) || node.child[lane] == kBvhEmptyLane) continue;
@@ -242,7 +233,6 @@ TRAZO_HD uint32_t pushLaterChildren(const WideBvhNode& node, unsigned mask, uint
         first = node.child[lane];
     }
     return first;
-#endif
 }
 
 }  // namespace bvh_detail
