@@ -512,6 +512,49 @@ TEST(BvhTraverse, SseChildTestMatchesScalarBitForBit) {
 #endif
 }
 
+// The host's shortcut for one or two children entered must push and return exactly what the sorting
+// insertion does (which child is nearest on a tie decides which of two equally near triangles is kept).
+TEST(BvhTraverse, NearestChildShortcutMatchesTheSort) {
+#if TRAZO_BVH_SSE
+    CounterUniform u(51);
+    const std::vector<WideBvhNode> nodes(104);  // what the interior references 100–103 point to (prefetched)
+    int twoChildren = 0, ties = 0;
+    for (int trial = 0; trial < 100000; ++trial) {
+        WideBvhNode node{};
+        float tEntry[kBvhWidth];
+        for (int lane = 0; lane < kBvhWidth; ++lane) {
+            const float pick = u(0.0f, 1.0f);
+            node.child[lane] = pick < 0.1f ? kBvhEmptyLane : (pick < 0.5f ? bvhLeafRef(7 * lane, 1 + lane % 4) : 100u + lane);
+            tEntry[lane] = std::round(u(0.0f, 3.0f));  // few distinct values: many ties
+        }
+        const unsigned mask = (unsigned)u(0.0f, 16.0f) & 0xfu;
+        bvh_detail::StackEntry sorted[kBvhWidth], shortcut[kBvhWidth];
+        int sortedSize = 0, shortcutSize = 0;
+        const uint32_t a = bvh_detail::pushFartherChildren(node, mask, tEntry, sorted, sortedSize, kBvhWidth);
+        const uint32_t b = bvh_detail::nearestChildPushOthers(nodes.data(), node, mask, tEntry, shortcut, shortcutSize,
+                                                                 kBvhWidth);
+        ASSERT_EQ(a, b) << "trial " << trial;
+        ASSERT_EQ(sortedSize, shortcutSize) << "trial " << trial;
+        for (int i = 0; i < sortedSize; ++i) {
+            ASSERT_EQ(sorted[i].ref, shortcut[i].ref) << "trial " << trial;
+            ASSERT_EQ(sorted[i].tEntry, shortcut[i].tEntry) << "trial " << trial;
+        }
+        unsigned entered = 0;
+        for (int lane = 0; lane < kBvhWidth; ++lane)
+            if ((mask >> lane & 1) && node.child[lane] != kBvhEmptyLane) entered |= 1u << lane;
+        if (__builtin_popcount(entered) == 2) {
+            ++twoChildren;
+            const int first = __builtin_ctz(entered), second = 31 - __builtin_clz(entered);
+            ties += tEntry[first] == tEntry[second];
+        }
+    }
+    EXPECT_GT(twoChildren, 10000) << "too few nodes with two children entered";
+    EXPECT_GT(ties, 1000) << "too few ties between two children";
+#else
+    GTEST_SKIP() << "this build has no host shortcut (not x86-64, or a device compile)";
+#endif
+}
+
 // 1,000,000 rays from outside a closed tessellated sphere towards points inside it: each must hit, and be
 // blocked before reaching its target. Rays aimed at the mesh's vertices stress the shared edges.
 TEST(BvhWatertight, ClosedSphereLetsNoRayThrough) {

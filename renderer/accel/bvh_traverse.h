@@ -25,6 +25,9 @@ struct NodeRay {
     int nearSide[3];  // per axis: 0 = the min plane is entered first, 1 = the max plane; the exit is 1 − it
 #if TRAZO_BVH_SSE
     __m128 originLanes[3], invLanes[3];  // broadcast once per ray rather than once per node
+    // Per axis, where the entry and the exit planes' four floats start in WideBvhNode::bounds (floats from
+    // bounds[0][0]): no index arithmetic per node.
+    int entryOffset[3], exitOffset[3];
 #endif
 };
 
@@ -39,6 +42,8 @@ TRAZO_HD NodeRay makeNodeRay(const Ray& ray) {
     for (int axis = 0; axis < 3; ++axis) {
         r.originLanes[axis] = _mm_set1_ps(b.origin[axis]);
         r.invLanes[axis] = _mm_set1_ps(b.invDirection[axis]);
+        r.entryOffset[axis] = (2 * axis + r.nearSide[axis]) * kBvhWidth;
+        r.exitOffset[axis] = (2 * axis + 1 - r.nearSide[axis]) * kBvhWidth;
     }
 #endif
     return r;
@@ -71,10 +76,11 @@ TRAZO_HD unsigned intersectChildrenScalar(const NodeRay& r, const WideBvhNode& n
 inline unsigned intersectChildrenSse(const NodeRay& r, const WideBvhNode& node, float tMin, float tMax,
                                      float tEntry[kBvhWidth]) {
     __m128 t0 = _mm_set1_ps(tMin), t1 = _mm_set1_ps(tMax);
+    const float* bounds = &node.bounds[0][0][0];
     for (int axis = 0; axis < 3; ++axis) {
         const __m128 origin = r.originLanes[axis], inv = r.invLanes[axis];
-        const __m128 tNear = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[axis][r.nearSide[axis]]), origin), inv);
-        const __m128 tFar = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(node.bounds[axis][1 - r.nearSide[axis]]), origin), inv);
+        const __m128 tNear = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds + r.entryOffset[axis]), origin), inv);
+        const __m128 tFar = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds + r.exitOffset[axis]), origin), inv);
         t0 = _mm_max_ps(tNear, t0);
         t1 = _mm_min_ps(tFar, t1);
     }
@@ -92,10 +98,29 @@ TRAZO_HD unsigned intersectChildren(const NodeRay& r, const WideBvhNode& node, f
 #endif
 }
 
-// Host: starts loading the interior children the ray entered while the nearest is being chosen; random rays
-// wait on memory for most of their time (bvh_bench, 1M-triangle sphere: random rays 0.51x → 0.59x of Embree).
+#if TRAZO_BVH_SSE
+// Host: the lanes whose reference is a leaf or empty (bit 31 set in both), and the lanes in use, read from
+// the four references at once.
+inline unsigned leafOrEmptyLanes(const WideBvhNode& node) {
+    return (unsigned)_mm_movemask_ps(_mm_load_ps(reinterpret_cast<const float*>(node.child)));
+}
+inline unsigned usedLanes(const WideBvhNode& node) {
+    const __m128i refs = _mm_load_si128(reinterpret_cast<const __m128i*>(node.child));
+    const __m128i empty = _mm_cmpeq_epi32(refs, _mm_set1_epi32((int)kBvhEmptyLane));
+    return ~(unsigned)_mm_movemask_ps(_mm_castsi128_ps(empty)) & 0xfu;
+}
+#endif
+
+// Host: starts loading the interior children the ray entered before they are popped; random rays wait on
+// memory for most of their time (bvh_bench, 1M-triangle sphere: random rays 0.51x → 0.59x of Embree).
 TRAZO_HD void prefetchChildren(const WideBvhNode* nodes, const WideBvhNode& node, unsigned mask) {
-#if !defined(__CUDA_ARCH__)
+#if TRAZO_BVH_SSE
+    for (unsigned interior = mask & ~leafOrEmptyLanes(node); interior; interior &= interior - 1) {
+        const char* child = reinterpret_cast<const char*>(nodes + node.child[__builtin_ctz(interior)]);
+        __builtin_prefetch(child);
+        __builtin_prefetch(child + 64);
+    }
+#elif !defined(__CUDA_ARCH__)
     for (int lane = 0; lane < kBvhWidth; ++lane)
         if ((mask & (1u << lane)) && !bvhIsLeaf(node.child[lane])) {
             const char* child = reinterpret_cast<const char*>(nodes + node.child[lane]);
@@ -171,6 +196,31 @@ TRAZO_HD uint32_t pushFartherChildren(const WideBvhNode& node, unsigned mask, co
     return hits[count - 1].ref;
 }
 
+// The same order without the sort where it is not needed: one child entered (the common case) is taken
+// without a push, two are ordered by one comparison (the insertion above puts the higher lane nearer on a
+// tie), three or four are sorted as above. Prefetches the children entered (prefetchChildren), but on the
+// host not the one read next: its node test loads both its lines a few instructions later anyway.
+TRAZO_HD uint32_t nearestChildPushOthers(const WideBvhNode* nodes, const WideBvhNode& node, unsigned mask,
+                                         const float tEntry[kBvhWidth], StackEntry* stack, int& size, int capacity) {
+#if TRAZO_BVH_SSE
+    mask &= usedLanes(node);
+    if (!mask) return kBvhEmptyLane;
+    const int a = __builtin_ctz(mask);
+    unsigned rest = mask & (mask - 1);
+    if (!rest) return node.child[a];
+    const int b = __builtin_ctz(rest);
+    if (!(rest & (rest - 1))) {
+        const bool aNearer = tEntry[a] < tEntry[b];
+        const int nearer = aNearer ? a : b, farther = aNearer ? b : a;
+        prefetchChildren(nodes, node, 1u << farther);
+        push(stack, size, capacity, StackEntry{node.child[farther], tEntry[farther]});
+        return node.child[nearer];
+    }
+#endif
+    prefetchChildren(nodes, node, mask);
+    return pushFartherChildren(node, mask, tEntry, stack, size, capacity);
+}
+
 // For any-hit queries: pushes the children in `mask` but the first in lane order, returns the first. Sorting
 // by distance, as closest-hit does, made shadow rays slower (bvh_bench: 1M-triangle sphere, 0.49x → 0.65x
 // of Embree), since any occluder will do.
@@ -205,8 +255,7 @@ TRAZO_HD bool traverseClosest(const WideBvhNode* nodes, const Ray& ray, float tM
             float tEntry[kBvhWidth];
             const unsigned mask = bvh_detail::intersectChildren(nodeRay, node, tMin, tMax, tEntry);
             if (mask) {
-                bvh_detail::prefetchChildren(nodes, node, mask);
-                ref = bvh_detail::pushFartherChildren(node, mask, tEntry, entries, size, capacity);
+                ref = bvh_detail::nearestChildPushOthers(nodes, node, mask, tEntry, entries, size, capacity);
                 if (ref != kBvhEmptyLane) continue;
             }
         } else {
@@ -252,7 +301,7 @@ TRAZO_HD bool traverseAny(const WideBvhNode* nodes, const Ray& ray, float tMin, 
             float tEntry[kBvhWidth];
             const unsigned mask = bvh_detail::intersectChildren(nodeRay, node, tMin, tMax, tEntry);
             if (mask) {
-                bvh_detail::prefetchChildren(nodes, node, mask);
+                bvh_detail::prefetchChildren(nodes, node, mask & (mask - 1));  // not the first lane: it is read next
                 ref = bvh_detail::pushLaterChildren(node, mask, entries, size, capacity);
                 if (ref != kBvhEmptyLane) continue;
             }

@@ -67,10 +67,12 @@ inline Triangles4 loadTriangles4(const MeshTriangle* triangles, uint32_t count) 
 // intersectSheared for four triangles. Returns the mask of lanes hit within (tMin, tMax), with t and the
 // reciprocal determinant per lane, or −1 when a lane has an edge function of exactly zero: the caller then
 // falls back to the scalar test, which re-evaluates it in double.
+// The triangles are loaded here rather than by the caller, so their transposed vertices stay in registers.
 template <int KZ>
-inline int intersect4Along(const TriangleRay& r, const Triangles4& tri, float tMin, float tMax, __m128& t,
-                           __m128& invDet, __m128& v, __m128& w) {
+inline int intersect4Along(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin, float tMax,
+                           __m128& t, __m128& invDet, __m128& v, __m128& w) {
     constexpr int KX = KZ == 2 ? 0 : KZ + 1, KY = KX == 2 ? 0 : KX + 1;
+    const Triangles4 tri = loadTriangles4(triangles, count);
     const __m128 ox = _mm_set1_ps(r.origin[KX]), oy = _mm_set1_ps(r.origin[KY]), oz = _mm_set1_ps(r.origin[KZ]);
     const __m128 sx = _mm_set1_ps(r.sx), sy = _mm_set1_ps(r.sy), sz = _mm_set1_ps(r.sz);
     __m128 x[3], y[3], z[3];
@@ -89,6 +91,8 @@ inline int intersect4Along(const TriangleRay& r, const Triangles4& tri, float tM
     if (_mm_movemask_ps(anyZero)) return -1;
     const __m128 anyNegative = _mm_or_ps(_mm_cmplt_ps(u, zero), _mm_or_ps(_mm_cmplt_ps(v, zero), _mm_cmplt_ps(w, zero)));
     const __m128 anyPositive = _mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_or_ps(_mm_cmpgt_ps(v, zero), _mm_cmpgt_ps(w, zero)));
+    const __m128 mixedSigns = _mm_and_ps(anyNegative, anyPositive);
+    if (_mm_movemask_ps(mixedSigns) == 0xf) return 0;  // most leaves a ray reaches: no division needed
     const __m128 det = _mm_add_ps(_mm_add_ps(u, v), w);
     const __m128 tScaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, _mm_mul_ps(sz, z[0])), _mm_mul_ps(v, _mm_mul_ps(sz, z[1]))),
                                       _mm_mul_ps(w, _mm_mul_ps(sz, z[2])));
@@ -96,15 +100,15 @@ inline int intersect4Along(const TriangleRay& r, const Triangles4& tri, float tM
     t = _mm_mul_ps(tScaled, invDet);
     // A lane with mixed signs or det = 0 misses; so does a NaN t (the comparisons fail).
     const __m128 inRange = _mm_and_ps(_mm_cmpgt_ps(t, _mm_set1_ps(tMin)), _mm_cmplt_ps(t, _mm_set1_ps(tMax)));
-    const __m128 hit = _mm_andnot_ps(_mm_or_ps(_mm_and_ps(anyNegative, anyPositive), _mm_cmpeq_ps(det, zero)), inRange);
+    const __m128 hit = _mm_andnot_ps(_mm_or_ps(mixedSigns, _mm_cmpeq_ps(det, zero)), inRange);
     return _mm_movemask_ps(hit);
 }
 
-inline int intersect4(const TriangleRay& r, const Triangles4& tri, float tMin, float tMax, __m128& t, __m128& invDet,
-                      __m128& v, __m128& w) {
-    if (r.kz == 2) return intersect4Along<2>(r, tri, tMin, tMax, t, invDet, v, w);
-    if (r.kz == 0) return intersect4Along<0>(r, tri, tMin, tMax, t, invDet, v, w);
-    return intersect4Along<1>(r, tri, tMin, tMax, t, invDet, v, w);
+inline int intersect4(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin, float tMax,
+                      __m128& t, __m128& invDet, __m128& v, __m128& w) {
+    if (r.kz == 2) return intersect4Along<2>(r, triangles, count, tMin, tMax, t, invDet, v, w);
+    if (r.kz == 0) return intersect4Along<0>(r, triangles, count, tMin, tMax, t, invDet, v, w);
+    return intersect4Along<1>(r, triangles, count, tMin, tMax, t, invDet, v, w);
 }
 
 }  // namespace triangle_detail
@@ -116,7 +120,7 @@ TRAZO_HD bool intersectTriangleLeaf(const TriangleRay& r, const MeshTriangle* tr
 #if TRAZO_TRIANGLE_SSE
     using namespace triangle_detail;
     __m128 t, invDet, v, w;
-    int mask = intersect4(r, loadTriangles4(triangles, count), tMin, tMax, t, invDet, v, w);
+    int mask = intersect4(r, triangles, count, tMin, tMax, t, invDet, v, w);
     if (mask < 0) return intersectTrianglesLoop(r, triangles, count, tMin, tMax, hit, which);
     mask &= (1 << count) - 1;
     if (!mask) return false;
@@ -141,7 +145,7 @@ TRAZO_HD bool triangleLeafBlocks(const TriangleRay& r, const MeshTriangle* trian
 #if TRAZO_TRIANGLE_SSE
     using namespace triangle_detail;
     __m128 t, invDet, v, w;
-    const int mask = intersect4(r, loadTriangles4(triangles, count), tMin, tMax, t, invDet, v, w);
+    const int mask = intersect4(r, triangles, count, tMin, tMax, t, invDet, v, w);
     if (mask >= 0) return (mask & ((1 << count) - 1)) != 0;
 #endif
     TriangleHit hit;
