@@ -6,6 +6,9 @@
 #include "integrator/scene_intersect.h"
 #include "shading/cook_torrance.h"
 #include "shading/oren_nayar.h"
+#if !TRAZO_DEVICE_PATHS
+#include "integrator/occluded_packet.h"
+#endif
 
 namespace trazo {
 
@@ -86,6 +89,64 @@ TRAZO_HD Vec3 shadeFromPoint(const SceneView& scene, const ShadingPoint& sp, con
     return color * brdf.eval(l);
 }
 
+// The jittered point of cell s of the light's grid (two draws of rng, u first).
+TRAZO_HD Vec3 cellPoint(const AreaLightData& light, uint32_t s, SampleStream& rng) {
+    const float su = (float(s % light.cellsU) + rng.next()) / float(light.cellsU);
+    const float sv = (float(s / light.cellsU) + rng.next()) / float(light.cellsV);
+    return light.rect.center + light.rect.halfU * (2.0f * su - 1.0f) + light.rect.halfV * (2.0f * sv - 1.0f);
+}
+
+#if !TRAZO_DEVICE_PATHS
+// Host: blocks of fewer cells take shadeFromPoint ray by ray (a packet's set-up costs more than it saves).
+constexpr uint32_t kMinShadowPacket = 4;
+
+// Host: the sum of shadeFromPoint over the block's cells, in cell order, with the shadow rays that leave
+// from sp.above (all but those below the geometric surface) traced together, kPacketRays at a time. The
+// same rng draws, the same rays and the same sum as the loop over shadeFromPoint, bit for bit.
+inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, const PointBrdf& brdf,
+                               const AreaLightData& light, const StrataBlock& cells, SampleStream& rng,
+                               uint32_t& rays) {
+    Vec3 lightSum(0.0f);
+    ShadowPacket packet;
+    for (uint32_t start = 0; start < cells.size; start += kPacketRays) {
+        const uint32_t count = cells.size - start < kPacketRays ? cells.size - start : kPacketRays;
+        uint64_t traced = 0, together = 0, blocked = 0;  // per cell: a shadow ray; from sp.above; blocked
+        for (uint32_t k = 0; k < count; ++k) {
+            const Vec3 x = cellPoint(light, cells.stratum(start + k), rng);
+            const Vec3 toLight = x - sp.p;
+            const float dist = length(toLight);
+            if (!(dist > 0.0f)) continue;
+            const Vec3 l = toLight / dist;
+            if (dot(sp.n, l) <= 0.0f) continue;
+            const Vec3 origin = sp.rayOrigin(l);
+            ++rays;
+            const float tMax = length(x - origin);
+            packet.dx[k] = l.x;
+            packet.dy[k] = l.y;
+            packet.dz[k] = l.z;
+            packet.tMax[k] = tMax;
+            traced |= 1ull << k;
+            if (!(dot(l, sp.ng) < 0.0f)) together |= 1ull << k;  // rayOrigin gave sp.above
+            else if (occluded(scene, Ray{origin, l}, tMax)) blocked |= 1ull << k;
+        }
+        for (uint32_t k = count; k < (uint32_t)kPacketRays; ++k) {  // defined lanes past the end
+            packet.dx[k] = packet.dy[k] = packet.dz[k] = 1.0f;
+            packet.tMax[k] = 0.0f;
+        }
+        for (uint32_t k = 0; k < count; ++k)
+            if (!(traced & (1ull << k))) packet.dx[k] = packet.dy[k] = packet.dz[k] = 1.0f, packet.tMax[k] = 0.0f;
+        blocked |= occludedPacket(scene, sp.above, packet, together);
+        for (uint32_t k = 0; k < count; ++k) {
+            const uint64_t bit = 1ull << k;
+            lightSum += (traced & bit) && !(blocked & bit)
+                            ? light.color * brdf.eval(Vec3(packet.dx[k], packet.dy[k], packet.dz[k]))
+                            : Vec3(0.0f);
+        }
+    }
+    return lightSum;
+}
+#endif
+
 // F: the scene's specialised feature bits (sample_variants.h); without kFeatureAreaLights the area-light
 // loop is compiled out. lightBlock: the StrataBlocks target for the area lights' cells at this point;
 // rotation: StrataKey::block's (the index of the indirect direction that found this point).
@@ -106,13 +167,13 @@ TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const 
         const StrataBlock cells =
             strata.block(kGridAreaLightBase + i, light.cellsU * light.cellsV, lightBlock, rotation);
         Vec3 lightSum(0.0f);
-        for (uint32_t j = 0; j < cells.size; ++j) {
-            const uint32_t s = cells.stratum(j);
-            const float su = (float(s % light.cellsU) + rng.next()) / float(light.cellsU);
-            const float sv = (float(s / light.cellsU) + rng.next()) / float(light.cellsV);
-            const Vec3 x = light.rect.center + light.rect.halfU * (2.0f * su - 1.0f) + light.rect.halfV * (2.0f * sv - 1.0f);
-            lightSum += shadeFromPoint(scene, sp, brdf, x, light.color, rays);
-        }
+#if !TRAZO_DEVICE_PATHS
+        if (cells.size >= kMinShadowPacket) {
+            lightSum = shadeCellsTogether(scene, sp, brdf, light, cells, rng, rays);
+        } else
+#endif
+        for (uint32_t j = 0; j < cells.size; ++j)
+            lightSum += shadeFromPoint(scene, sp, brdf, cellPoint(light, cells.stratum(j), rng), light.color, rays);
         sum += cells.size == 1 ? lightSum : lightSum / float(cells.size);
     }
     }
