@@ -67,7 +67,7 @@ inline uint64_t bits(LaneI m) {
 }
 inline LaneF sqrt(LaneF x) {
 #if defined(__AVX512F__)
-    return (LaneF)_mm512_sqrt_ps((__m512)x);
+    return (LaneF)_mm512_maskz_sqrt_ps((__mmask16)0xffff, (__m512)x);  // _mm512_sqrt_ps: a false -Wmaybe-uninitialized in GCC 12
 #elif defined(__AVX2__) && defined(__FMA__)
     return (LaneF)_mm256_sqrt_ps((__m256)x);
 #else
