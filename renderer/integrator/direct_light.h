@@ -100,42 +100,31 @@ TRAZO_HD Vec3 cellPoint(const AreaLightData& light, uint32_t s, SampleStream& rn
 // Host: blocks of fewer cells take shadeFromPoint ray by ray (a packet's set-up costs more than it saves).
 constexpr uint32_t kMinShadowPacket = 4;
 
-// Host: the sum of shadeFromPoint over the block's cells, in cell order, with the shadow rays that leave
-// from sp.above (all but those below the geometric surface) traced together, kPacketRays at a time. The
-// same rng draws, the same rays and the same sum as the loop over shadeFromPoint, bit for bit.
+// Host: the sum of shadeFromPoint over the block's cells, in cell order, kPacketRays cells at a time: the
+// rng draws first (scalar, in order), then the light points and shadow rays in SIMD lanes (aimShadowRays),
+// traced together (occludedPacket, one packet per origin), then the visible cells shaded in order. The same
+// draws, rays and sum as the loop over shadeFromPoint, bit for bit.
 inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, const PointBrdf& brdf,
                                const AreaLightData& light, const StrataBlock& cells, SampleStream& rng,
                                uint32_t& rays) {
     Vec3 lightSum(0.0f);
+    const Vec3 below = bumpedOrigin(sp.p, -(sp.ng * sp.offset));  // rayOrigin towards −ng
     ShadowPacket packet;
+    alignas(64) float cellU[kPacketRays], cellV[kPacketRays];  // column + ξ, row + ξ (cellPoint's numerators)
     for (uint32_t start = 0; start < cells.size; start += kPacketRays) {
         const uint32_t count = cells.size - start < kPacketRays ? cells.size - start : kPacketRays;
-        uint64_t traced = 0, together = 0, blocked = 0;  // per cell: a shadow ray; from sp.above; blocked
         for (uint32_t k = 0; k < count; ++k) {
-            const Vec3 x = cellPoint(light, cells.stratum(start + k), rng);
-            const Vec3 toLight = x - sp.p;
-            const float dist = length(toLight);
-            if (!(dist > 0.0f)) continue;
-            const Vec3 l = toLight / dist;
-            if (dot(sp.n, l) <= 0.0f) continue;
-            const Vec3 origin = sp.rayOrigin(l);
-            ++rays;
-            const float tMax = length(x - origin);
-            packet.dx[k] = l.x;
-            packet.dy[k] = l.y;
-            packet.dz[k] = l.z;
-            packet.tMax[k] = tMax;
-            traced |= 1ull << k;
-            if (!(dot(l, sp.ng) < 0.0f)) together |= 1ull << k;  // rayOrigin gave sp.above
-            else if (occluded(scene, Ray{origin, l}, tMax)) blocked |= 1ull << k;
+            const uint32_t s = cells.stratum(start + k);
+            cellU[k] = float(s % light.cellsU) + rng.next();
+            cellV[k] = float(s / light.cellsU) + rng.next();
         }
-        for (uint32_t k = count; k < (uint32_t)kPacketRays; ++k) {  // defined lanes past the end
-            packet.dx[k] = packet.dy[k] = packet.dz[k] = 1.0f;
-            packet.tMax[k] = 0.0f;
-        }
-        for (uint32_t k = 0; k < count; ++k)
-            if (!(traced & (1ull << k))) packet.dx[k] = packet.dy[k] = packet.dz[k] = 1.0f, packet.tMax[k] = 0.0f;
-        blocked |= occludedPacket(scene, sp.above, packet, together);
+        for (uint32_t k = count; k < (uint32_t)kPacketRays; ++k) cellU[k] = cellV[k] = 0.5f;
+        const AimedRays aimed = aimShadowRays(light.rect, light.cellsU, light.cellsV, cellU, cellV, sp.p, sp.n, sp.ng,
+                                              sp.above, below, packet);
+        const uint64_t traced = aimed.traced & (count == (uint32_t)kPacketRays ? ~0ull : (1ull << count) - 1);
+        rays += (uint32_t)__builtin_popcountll(traced);
+        uint64_t blocked = occludedPacket(scene, sp.above, packet, traced & ~aimed.fromBelow);
+        if (traced & aimed.fromBelow) blocked |= occludedPacket(scene, below, packet, traced & aimed.fromBelow);
         for (uint32_t k = 0; k < count; ++k) {
             const uint64_t bit = 1ull << k;
             lightSum += (traced & bit) && !(blocked & bit)

@@ -18,6 +18,7 @@
 #include <cstring>
 
 #include "integrator/scene_intersect.h"
+#include "objects/rectangle.h"
 
 namespace trazo {
 
@@ -310,6 +311,47 @@ struct PacketEntry {
 };
 
 }  // namespace packet_detail
+
+// The shadow rays of shadeFromPoint towards points of a light's rectangle, lane by lane (see aimShadowRays).
+struct AimedRays {
+    uint64_t traced = 0;     // the rays shadeFromPoint sends (a light point at a distance, in front of n)
+    uint64_t fromBelow = 0;  // those leaving from the origin below the surface (towards −ng)
+};
+
+// Ray k of `out` aims at the point of the rectangle at jittered cell coordinates (cellU[k], cellV[k]) (column +
+// ξ, row + ξ) of a cellsU × cellsV grid, as cellPoint and shadeFromPoint compute it (integrator/direct_light.h):
+// the same operations in the same order, kPacketRays lanes of them. p, n, ng: the shading point, its shading
+// and geometric normals; above and below: its ray origins towards ±ng (ShadingPoint::rayOrigin).
+inline AimedRays aimShadowRays(const RectangleShape& rect, uint32_t cellsU, uint32_t cellsV, const float* cellU,
+                               const float* cellV, Vec3 p, Vec3 n, Vec3 ng, Vec3 above, Vec3 below, ShadowPacket& out) {
+    using namespace packet_detail;
+    AimedRays aimed;
+    const float width = float(cellsU), height = float(cellsV);
+    for (int g = 0; g < kGroups; ++g) {
+        const int o = g * kLanes;
+        const LaneF su = load(cellU + o) / width, sv = load(cellV + o) / height;
+        const LaneF a = 2.0f * su - 1.0f, b = 2.0f * sv - 1.0f;
+        const V3 x = {rect.center.x + rect.halfU.x * a + rect.halfV.x * b,
+                      rect.center.y + rect.halfU.y * a + rect.halfV.y * b,
+                      rect.center.z + rect.halfU.z * a + rect.halfV.z * b};
+        const V3 toLight = {x.x - p.x, x.y - p.y, x.z - p.z};
+        const LaneF dist = sqrt(dot(toLight, toLight));
+        const LaneF inv = 1.0f / dist;
+        const V3 l = {toLight.x * inv, toLight.y * inv, toLight.z * inv};
+        const LaneI traced = (dist > 0.0f) & ~(dot(n, l) <= 0.0f);
+        const LaneI down = dot(ng, l) < 0.0f;
+        const V3 toEnd = {x.x - (down ? splat(below.x) : splat(above.x)), x.y - (down ? splat(below.y) : splat(above.y)),
+                          x.z - (down ? splat(below.z) : splat(above.z))};
+        const LaneF tMax = sqrt(dot(toEnd, toEnd));
+        std::memcpy(out.dx + o, &l.x, sizeof l.x);
+        std::memcpy(out.dy + o, &l.y, sizeof l.y);
+        std::memcpy(out.dz + o, &l.z, sizeof l.z);
+        std::memcpy(out.tMax + o, &tMax, sizeof tMax);
+        aimed.traced |= bits(traced) << o;
+        aimed.fromBelow |= bits(down) << o;
+    }
+    return aimed;
+}
 
 // The rays of `active` (bit i: ray i of `rays`) that something blocks: occluded(scene, Ray{origin, ray i's
 // direction}, ray i's tMax) for each, bit for bit.
