@@ -101,7 +101,7 @@ TRAZO_HD Vec3 cellPoint(const AreaLightData& light, uint32_t s, SampleStream& rn
 constexpr uint32_t kMinShadowPacket = 4;
 
 // Host: the sum of shadeFromPoint over the block's cells, in cell order, kPacketRays cells at a time: the
-// rng draws first (scalar, in order), then the light points and shadow rays in SIMD lanes (aimShadowRays),
+// rng draws, light points and shadow rays in SIMD lanes (aimShadowRays),
 // traced together (occludedPacket, one packet per origin), then the visible cells shaded in order. The same
 // draws, rays and sum as the loop over shadeFromPoint, bit for bit.
 inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, const PointBrdf& brdf,
@@ -110,17 +110,18 @@ inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, c
     Vec3 lightSum(0.0f);
     const Vec3 below = bumpedOrigin(sp.p, -(sp.ng * sp.offset));  // rayOrigin towards −ng
     ShadowPacket packet;
-    alignas(64) float cellU[kPacketRays], cellV[kPacketRays];  // column + ξ, row + ξ (cellPoint's numerators)
+    alignas(64) float column[kPacketRays], row[kPacketRays];  // of each cell in the light's grid
     for (uint32_t start = 0; start < cells.size; start += kPacketRays) {
         const uint32_t count = cells.size - start < kPacketRays ? cells.size - start : kPacketRays;
         for (uint32_t k = 0; k < count; ++k) {
             const uint32_t s = cells.stratum(start + k);
-            cellU[k] = float(s % light.cellsU) + rng.next();
-            cellV[k] = float(s / light.cellsU) + rng.next();
+            column[k] = float(s % light.cellsU);
+            row[k] = float(s / light.cellsU);
         }
-        for (uint32_t k = count; k < (uint32_t)kPacketRays; ++k) cellU[k] = cellV[k] = 0.5f;
-        const AimedRays aimed = aimShadowRays(light.rect, light.cellsU, light.cellsV, cellU, cellV, sp.p, sp.n, sp.ng,
-                                              sp.above, below, packet);
+        for (uint32_t k = count; k < (uint32_t)kPacketRays; ++k) column[k] = row[k] = 0.0f;
+        const AimedRays aimed = aimShadowRays(light.rect, light.cellsU, light.cellsV, column, row, rng.key,
+                                              rng.dimension, sp.p, sp.n, sp.ng, sp.above, below, packet);
+        rng.dimension += 2u * count;  // cellPoint's two draws per cell, taken in the lanes
         const uint64_t traced = aimed.traced & (count == (uint32_t)kPacketRays ? ~0ull : (1ull << count) - 1);
         rays += (uint32_t)__builtin_popcountll(traced);
         uint64_t blocked = occludedPacket(scene, sp.above, packet, traced & ~aimed.fromBelow);

@@ -43,6 +43,7 @@ constexpr int kLanes = 4;
 #endif
 typedef float LaneF __attribute__((vector_size(kLanes * 4)));
 typedef int32_t LaneI __attribute__((vector_size(kLanes * 4)));
+typedef uint32_t LaneU __attribute__((vector_size(kLanes * 4)));
 constexpr int kGroups = kPacketRays / kLanes;
 constexpr uint64_t kGroupBits = kLanes == 64 ? ~0ull : (1ull << kLanes) - 1;
 
@@ -93,6 +94,19 @@ inline LaneF copysign(LaneF magnitude, LaneF sign) {
     return (LaneF)(((LaneI)magnitude & ~signBit) | ((LaneI)sign & signBit));
 }
 inline LaneF fabs(LaneF x) { return (LaneF)((LaneI)x & ~(LaneI)splat(-0.0f)); }
+
+// SampleStream{key, dimension}.next() lane by lane (core/rng.h: hashCombine, hashU32, bitsToUnitFloat).
+inline LaneF unitFloats(uint32_t key, LaneU dimension) {
+    LaneU x = key ^ (dimension + 0x9e3779b9u + (key << 6) + (key >> 2));
+    x ^= x >> 17;
+    x *= 0xed5ad4bbu;
+    x ^= x >> 11;
+    x *= 0xac4c1b51u;
+    x ^= x >> 15;
+    x *= 0x31848babu;
+    x ^= x >> 14;
+    return __builtin_convertvector((LaneI)(x >> 8), LaneF) * (1.0f / 16777216.0f);
+}
 
 // The lanes of one ray group, and of a Vec3 per lane.
 struct V3 {
@@ -318,18 +332,24 @@ struct AimedRays {
     uint64_t fromBelow = 0;  // those leaving from the origin below the surface (towards −ng)
 };
 
-// Ray k of `out` aims at the point of the rectangle at jittered cell coordinates (cellU[k], cellV[k]) (column +
-// ξ, row + ξ) of a cellsU × cellsV grid, as cellPoint and shadeFromPoint compute it (integrator/direct_light.h):
-// the same operations in the same order, kPacketRays lanes of them. p, n, ng: the shading point, its shading
-// and geometric normals; above and below: its ray origins towards ±ng (ShadingPoint::rayOrigin).
-inline AimedRays aimShadowRays(const RectangleShape& rect, uint32_t cellsU, uint32_t cellsV, const float* cellU,
-                               const float* cellV, Vec3 p, Vec3 n, Vec3 ng, Vec3 above, Vec3 below, ShadowPacket& out) {
+// Ray k of `out` aims at the jittered point of the cell in column[k], row[k] of the rectangle's cellsU × cellsV
+// grid, as cellPoint and shadeFromPoint compute it (integrator/direct_light.h): the same operations in the same
+// order, kPacketRays lanes of them, with cell k's two draws at rng dimensions dimension + 2k (u) and + 2k + 1
+// (v) of the stream `key` (the caller moves its stream on by 2 per cell). p, n, ng: the shading point, its
+// shading and geometric normals; above and below: its ray origins towards ±ng (ShadingPoint::rayOrigin).
+inline AimedRays aimShadowRays(const RectangleShape& rect, uint32_t cellsU, uint32_t cellsV, const float* column,
+                               const float* row, uint32_t key, uint32_t dimension, Vec3 p, Vec3 n, Vec3 ng,
+                               Vec3 above, Vec3 below, ShadowPacket& out) {
     using namespace packet_detail;
     AimedRays aimed;
     const float width = float(cellsU), height = float(cellsV);
+    LaneU lane;
+    for (int i = 0; i < kLanes; ++i) lane[i] = uint32_t(i);
     for (int g = 0; g < kGroups; ++g) {
         const int o = g * kLanes;
-        const LaneF su = load(cellU + o) / width, sv = load(cellV + o) / height;
+        const LaneU draw = dimension + 2u * (uint32_t(o) + lane);
+        const LaneF su = (load(column + o) + unitFloats(key, draw)) / width;
+        const LaneF sv = (load(row + o) + unitFloats(key, draw + 1u)) / height;
         const LaneF a = 2.0f * su - 1.0f, b = 2.0f * sv - 1.0f;
         const V3 x = {rect.center.x + rect.halfU.x * a + rect.halfV.x * b,
                       rect.center.y + rect.halfU.y * a + rect.halfV.y * b,
