@@ -100,9 +100,68 @@ TRAZO_HD Vec3 cellPoint(const AreaLightData& light, uint32_t s, SampleStream& rn
 // Host: blocks of fewer cells take shadeFromPoint ray by ray (a packet's set-up costs more than it saves).
 constexpr uint32_t kMinShadowPacket = 4;
 
+// Host: brdf.eval(l) for the rays of `lanes` in group g of the packet, in SIMD lanes: PointBrdf::eval with
+// evalOrenNayar and evalCookTorrance operation for operation (minOf(a, b) is a < b ? a : b, maxOf a > b ? a : b),
+// expf lane by lane (libm's, as the scalar code calls it).
+inline void evalBrdfLanes(const PointBrdf& brdf, const ShadowPacket& packet, int g, uint64_t lanes, float* fx,
+                          float* fy, float* fz) {
+    using namespace packet_detail;
+    const int o = g * kLanes;
+    const V3 l = {load(packet.dx + o), load(packet.dy + o), load(packet.dz + o)};
+    const Vec3 n = brdf.sp.n;
+    V3 f = {splat(0.0f), splat(0.0f), splat(0.0f)};
+    if (brdf.hasDiffuse) {
+        const OrenNayarView& w = brdf.diffuseView;
+        const LaneF nl = dot(n, l);
+        const LaneF cosL = nl < 1.0f ? nl : splat(1.0f);
+        LaneF on = cosL * w.a;
+        if (w.b != 0.0f) {
+            const LaneF lvt = dot(w.vt, l);
+            const LaneF azimuth = 0.0f > lvt ? splat(0.0f) : lvt;
+            const LaneF slope = cosL <= w.cosV ? (cosL / w.cosV) * w.sinV : splat(w.sinV);
+            on = cosL * w.a + w.b * azimuth * slope;
+        }
+        const Vec3 d = brdf.m.diffuse;
+        f = {d.x * on, d.y * on, d.z * on};
+    }
+    if (brdf.hasSpecular) {
+        const Vec3 v = brdf.sp.v;
+        const float m = maxOf(brdf.m.roughness, 0.01f);
+        const V3 sum = {l.x + v.x, l.y + v.y, l.z + v.z};
+        const LaneF inv = 1.0f / sqrt(dot(sum, sum));
+        const V3 h = {sum.x * inv, sum.y * inv, sum.z * inv};
+        const LaneF nh0 = dot(n, h);
+        const LaneF nh = nh0 < 1.0f ? nh0 : splat(1.0f);
+        const float nv = dot(n, v);
+        const LaneF nl = dot(n, l);
+        const LaneF vh = dot(v, h);
+        const LaneI zero = (nh <= 0.0f) | (vh <= 0.0f);
+        const LaneF nh2 = nh * nh;
+        const LaneF tan2 = (1.0f - nh2) / nh2;
+        const float m2 = m * m;
+        const LaneF exponent = -tan2 / m2;
+        LaneF e = splat(0.0f);
+        for (uint64_t left = lanes & ~bits(zero); left; left &= left - 1) {
+            const int i = __builtin_ctzll(left);
+            e[i] = expf(exponent[i]);
+        }
+        const LaneF piD = e / (m2 * nh2 * nh2);
+        const LaneF nearer = nv < nl ? splat(nv) : nl;
+        const LaneF g2 = 2.0f * nh * nearer / vh;
+        const LaneF gTerm = 1.0f < g2 ? splat(1.0f) : g2;
+        const LaneF ct = zero ? splat(0.0f) : piD * gTerm / (4.0f * nv);
+        const Vec3 sp = brdf.m.specular;
+        f = {f.x + sp.x * ct, f.y + sp.y * ct, f.z + sp.z * ct};
+    }
+    std::memcpy(fx + o, &f.x, sizeof f.x);
+    std::memcpy(fy + o, &f.y, sizeof f.y);
+    std::memcpy(fz + o, &f.z, sizeof f.z);
+}
+
 // Host: the sum of shadeFromPoint over the block's cells, in cell order, kPacketRays cells at a time: the
 // rng draws, light points and shadow rays in SIMD lanes (aimShadowRays),
-// traced together (occludedPacket, one packet per origin), then the visible cells shaded in order. The same
+// traced together (occludedPacket, one packet per origin), the visible cells' BRDF in lanes (evalBrdfLanes),
+// and their colours summed in cell order. The same
 // draws, rays and sum as the loop over shadeFromPoint, bit for bit.
 inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, const PointBrdf& brdf,
                                const AreaLightData& light, const StrataBlock& cells, SampleStream& rng,
@@ -111,6 +170,7 @@ inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, c
     const Vec3 below = bumpedOrigin(sp.p, -(sp.ng * sp.offset));  // rayOrigin towards −ng
     ShadowPacket packet;
     alignas(64) float column[kPacketRays], row[kPacketRays];  // of each cell in the light's grid
+    alignas(64) float fx[kPacketRays], fy[kPacketRays], fz[kPacketRays];  // brdf.eval of the visible cells
     for (uint32_t start = 0; start < cells.size; start += kPacketRays) {
         const uint32_t count = cells.size - start < kPacketRays ? cells.size - start : kPacketRays;
         for (uint32_t k = 0; k < count; ++k) {
@@ -126,12 +186,13 @@ inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, c
         rays += (uint32_t)__builtin_popcountll(traced);
         uint64_t blocked = occludedPacket(scene, sp.above, packet, traced & ~aimed.fromBelow);
         if (traced & aimed.fromBelow) blocked |= occludedPacket(scene, below, packet, traced & aimed.fromBelow);
-        for (uint32_t k = 0; k < count; ++k) {
-            const uint64_t bit = 1ull << k;
-            lightSum += (traced & bit) && !(blocked & bit)
-                            ? light.color * brdf.eval(Vec3(packet.dx[k], packet.dy[k], packet.dz[k]))
-                            : Vec3(0.0f);
+        const uint64_t visible = traced & ~blocked;
+        for (int g = 0; g < packet_detail::kGroups; ++g) {
+            const uint64_t lanes = (visible >> (g * packet_detail::kLanes)) & packet_detail::kGroupBits;
+            if (lanes) evalBrdfLanes(brdf, packet, g, lanes, fx, fy, fz);
         }
+        for (uint32_t k = 0; k < count; ++k)
+            lightSum += visible & (1ull << k) ? light.color * Vec3(fx[k], fy[k], fz[k]) : Vec3(0.0f);
     }
     return lightSum;
 }
