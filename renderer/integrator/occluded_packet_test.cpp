@@ -4,7 +4,9 @@
 // faces, zero direction components, segments ending on a surface.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -12,6 +14,7 @@
 
 #include "backends/cpu/cpu_kernels.h"
 #include "device/flatten.h"
+#include "integrator/direct_light.h"
 #include "integrator/occluded_packet.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"
@@ -205,6 +208,60 @@ TEST(OccludedPacket, MatchesOccludedRayByRayOnEveryIsa) {
     for (CpuIsa isa : kCpuIsas)
         if (!cpuIsaSupported(isa)) std::printf("occludedPacket: %s not compared: this CPU lacks it\n", cpuIsaName(isa));
     EXPECT_GT(compared, 0u);
+}
+
+// shadeCellsTogether (direct_light.h) against the loop over shadeFromPoint it replaces: the same sum, rays and
+// rng dimension, bit for bit, over random shading points (on surfaces, shading normals tilted off the
+// geometric ones so some cells lie behind or below), materials (matte, glossy, σ = 0, black lobes), lights
+// (grids up to 16 × 16, blocks from 4 cells to the whole grid, across packet boundaries).
+TEST(OccludedPacket, CellsShadedTogetherAsOneByOne) {
+    uint64_t visibleSeen = 0, blockedSeen = 0;
+    for (uint32_t seed = 1; seed <= 12; ++seed) {
+        const RandomScene scene = makeScene(seed);
+        std::mt19937 rng(seed * 104729u);
+        std::uniform_real_distribution<float> unit(-1.0f, 1.0f), pos(0.0f, 1.0f);
+        for (int point = 0; point < 200; ++point) {
+            AreaLightData light{};
+            light.rect.center = Vec3(4.0f * unit(rng), 7.0f + unit(rng), 4.0f * unit(rng));
+            light.rect.halfU = Vec3(0.5f + pos(rng), 0.0f, 0.0f);
+            light.rect.halfV = Vec3(0.0f, 0.0f, 0.5f + pos(rng));
+            light.rect.normal = Vec3(0.0f, -1.0f, 0.0f);
+            light.color = Vec3(pos(rng), pos(rng), pos(rng));
+            light.cellsU = 1 + rng() % 16;
+            light.cellsV = 1 + rng() % 16;
+            const uint32_t gridCells = light.cellsU * light.cellsV;
+            MaterialData m{};
+            m.diffuse = rng() % 5 ? Vec3(pos(rng), pos(rng), pos(rng)) : Vec3(0.0f);
+            m.specular = rng() % 2 ? Vec3(pos(rng), pos(rng), pos(rng)) : Vec3(0.0f);
+            m.roughness = rng() % 4 ? pos(rng) : 0.0f;
+            Vec3 normal;
+            Vec3 p = surfacePoint(scene.view, rng, normal);
+            if (isBlack(normal)) normal = Vec3(0.0f, 1.0f, 0.0f);
+            const Vec3 v = normalize(normal + Vec3(unit(rng), unit(rng), unit(rng)) * 0.8f);
+            const Vec3 n = normalize(normal + Vec3(unit(rng), unit(rng), unit(rng)) * 0.3f);
+            const ShadingPoint sp(p, Vec3(1e-6f) * (1.0f + maxComponent(abs(p))), normal, n, v);
+            const PointBrdf brdf(sp, m);
+            const StrataKey strata{seed, uint32_t(point), uint32_t(point % 3), 1u};
+            const uint32_t target = std::max(kMinShadowPacket, 1 + uint32_t(rng() % gridCells));
+            const StrataBlock cells = strata.block(kGridAreaLightBase, gridCells, rng() % 3 ? target : kWholeGrid);
+            if (cells.size < kMinShadowPacket) continue;
+            SampleStream one(seed, uint32_t(point), 0), together = one;
+            uint32_t raysOne = 0, raysTogether = 0;
+            Vec3 expected(0.0f);
+            for (uint32_t j = 0; j < cells.size; ++j)
+                expected += shadeFromPoint(scene.view, sp, brdf, cellPoint(light, cells.stratum(j), one), light.color,
+                                           raysOne);
+            const Vec3 got = shadeCellsTogether(scene.view, sp, brdf, light, cells, together, raysTogether);
+            ASSERT_EQ(std::memcmp(&got, &expected, sizeof got), 0)
+                << "seed " << seed << " point " << point << ": " << got.x << " vs " << expected.x;
+            ASSERT_EQ(raysTogether, raysOne);
+            ASSERT_EQ(together.dimension, one.dimension);
+            blockedSeen += raysOne > 0 && isBlack(expected);
+            visibleSeen += !isBlack(expected);
+        }
+    }
+    EXPECT_GT(visibleSeen, 100u);
+    EXPECT_GT(blockedSeen, 10u);
 }
 
 TEST(OccludedPacket, EmptySceneAndNoActiveRays) {
