@@ -6,8 +6,13 @@
 #include "integrator/scene_intersect.h"
 #include "shading/cook_torrance.h"
 #include "shading/oren_nayar.h"
-#if !TRAZO_DEVICE_PATHS
+// Host code that g++ compiles (not the device, nor nvcc's host pass, which renders nothing): an area light's
+// shadow rays traced in packets (occluded_packet.h).
+#if !TRAZO_DEVICE_PATHS && !defined(__CUDACC__)
+#define TRAZO_SHADOW_PACKETS 1
 #include "integrator/occluded_packet.h"
+#else
+#define TRAZO_SHADOW_PACKETS 0
 #endif
 
 namespace trazo {
@@ -96,7 +101,7 @@ TRAZO_HD Vec3 cellPoint(const AreaLightData& light, uint32_t s, SampleStream& rn
     return light.rect.center + light.rect.halfU * (2.0f * su - 1.0f) + light.rect.halfV * (2.0f * sv - 1.0f);
 }
 
-#if !TRAZO_DEVICE_PATHS
+#if TRAZO_SHADOW_PACKETS
 // Host: blocks of fewer cells take shadeFromPoint ray by ray (a packet's set-up costs more than it saves).
 constexpr uint32_t kMinShadowPacket = 4;
 
@@ -218,7 +223,7 @@ TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const 
         const StrataBlock cells =
             strata.block(kGridAreaLightBase + i, light.cellsU * light.cellsV, lightBlock, rotation);
         Vec3 lightSum(0.0f);
-#if !TRAZO_DEVICE_PATHS
+#if TRAZO_SHADOW_PACKETS
         if (cells.size >= kMinShadowPacket) {
             lightSum = shadeCellsTogether(scene, sp, brdf, light, cells, rng, rays);
         } else

@@ -8,9 +8,6 @@
 #include "backends/cpu/cpu_kernels.h"
 #include "integrator/ray_query.h"
 #include "integrator/sample_variants.h"
-#if !TRAZO_DEVICE_PATHS
-#include "integrator/occluded_packet.h"
-#endif
 
 namespace trazo {
 namespace {
@@ -42,7 +39,7 @@ void answerRayQueries(const SceneView& scene, const RayQuery* queries, size_t co
     for (size_t i = 0; i < count; ++i) out[i] = answerRayQuery(scene, queries[i], kind);
 }
 
-#if !TRAZO_DEVICE_PATHS
+#if TRAZO_SHADOW_PACKETS
 uint64_t occludedPacketEntry(const SceneView& scene, Vec3 origin, const ShadowPacket& rays, uint64_t active) {
     return occludedPacket(scene, origin, rays, active);
 }
@@ -52,7 +49,7 @@ constexpr CpuKernels makeCpuKernels(CpuIsa isa) {
     constexpr auto tiles = makeVariantTable<TileVariant>();
     CpuKernels k{isa, {}, &answerRayQueries, nullptr};
     for (uint32_t i = 0; i < kSampleVariantCount; ++i) k.renderTile[i] = tiles[i];
-#if !TRAZO_DEVICE_PATHS
+#if TRAZO_SHADOW_PACKETS
     k.occludedPacket = &occludedPacketEntry;
 #endif
     return k;
