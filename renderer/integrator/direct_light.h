@@ -6,9 +6,9 @@
 #include "integrator/scene_intersect.h"
 #include "shading/cook_torrance.h"
 #include "shading/oren_nayar.h"
-// Host code that g++ compiles (not the device, nor nvcc's host pass, which renders nothing): an area light's
-// shadow rays traced in packets (occluded_packet.h).
-#if !TRAZO_DEVICE_PATHS && !defined(__CUDACC__)
+// Host code that g++ compiles for x86-64 (not the device, nor nvcc's host pass, which renders nothing): an area
+// light's shadow rays traced in packets (occluded_packet.h).
+#if !TRAZO_DEVICE_PATHS && !defined(__CUDACC__) && defined(__SSE2__)
 #define TRAZO_SHADOW_PACKETS 1
 #include "integrator/occluded_packet.h"
 #else
@@ -163,11 +163,10 @@ inline void evalBrdfLanes(const PointBrdf& brdf, const ShadowPacket& packet, int
     std::memcpy(fz + o, &f.z, sizeof f.z);
 }
 
-// Host: the sum of shadeFromPoint over the block's cells, in cell order, kPacketRays cells at a time: the
-// rng draws, light points and shadow rays in SIMD lanes (aimShadowRays),
-// traced together (occludedPacket, one packet per origin), the visible cells' BRDF in lanes (evalBrdfLanes),
-// and their colours summed in cell order. The same
-// draws, rays and sum as the loop over shadeFromPoint, bit for bit.
+// Host: the sum of shadeFromPoint over the block's cells, kPacketRays cells at a time: the rng draws, light
+// points and shadow rays in SIMD lanes (aimShadowRays), the rays traced together (occludedPacket, one packet
+// per origin), the visible cells' BRDF in lanes (evalBrdfLanes), and their colours summed in cell order. The
+// same draws, rays and sum as the loop over shadeFromPoint, bit for bit.
 inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, const PointBrdf& brdf,
                                const AreaLightData& light, const StrataBlock& cells, SampleStream& rng,
                                uint32_t& rays) {

@@ -4,7 +4,8 @@
 // 8 AVX2, 16 AVX-512; renderer/backends/cpu/tile_render.h). Each ray's answer is occluded()'s bit for bit:
 // a ray meets the same boxes (the slab test of intersectChildren, the same IEEE operations in the same order),
 // so it reaches the same leaves, and the lanes repeat each shape's scalar test operation for operation.
-// Meshes and CSG solids take their scalar objectBlocks, ray by ray.
+// Meshes and CSG solids take their scalar objectBlocks, ray by ray. aimShadowRays computes the rays of an
+// area light's cells in the same lanes (integrator/direct_light.h, shadeCellsTogether).
 #pragma once
 
 #if TRAZO_DEVICE_PATHS || defined(__CUDACC__)

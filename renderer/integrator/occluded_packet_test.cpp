@@ -15,10 +15,10 @@
 #include "backends/cpu/cpu_kernels.h"
 #include "device/flatten.h"
 #include "integrator/direct_light.h"
-#include "integrator/occluded_packet.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"
 
+#if TRAZO_SHADOW_PACKETS
 namespace trazo {
 namespace {
 
@@ -277,3 +277,4 @@ TEST(OccludedPacket, EmptySceneAndNoActiveRays) {
 
 }  // namespace
 }  // namespace trazo
+#endif  // TRAZO_SHADOW_PACKETS
