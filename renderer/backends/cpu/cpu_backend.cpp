@@ -1,13 +1,14 @@
 // CPU backend: every pass runs renderSample over the image in 16×16 tiles on the backend's thread pool (ray
-// queries: chunks of rays on the same threads).
+// queries: chunks of rays on the same threads), through the kernels of the CPU's widest instruction set
+// (cpu_kernels.h).
 // Each pixel's sum depends only on (pixel, passes), never on which thread ran it.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 
 #include "backends/backend.h"
+#include "backends/cpu/cpu_kernels.h"
 #include "core/thread_pool.h"
-#include "integrator/sample_variants.h"
 
 namespace trazo {
 
@@ -15,40 +16,9 @@ namespace {
 
 constexpr uint32_t kTileSize = 16;
 
-struct Tile {
-    uint32_t x0, y0, x1, y1;
-};
-
-// Passes inside the tile keep its data in cache; per pixel they still add in pass order. The tile is in the
-// accumulation's pixels (frame.target). Returns rays.
-template <FeatureMask F>
-uint64_t renderTilePasses(const SceneView& scene, const FrameParams& frame, Tile tile, uint32_t firstPass,
-                          uint32_t passCount, AccumPixel* accum) {
-    uint64_t rays = 0;
-    for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
-        for (uint32_t y = tile.y0; y < tile.y1; ++y) {
-            for (uint32_t x = tile.x0; x < tile.x1; ++x) {
-                uint32_t sampleRays = 0;
-                uint32_t px, py;
-                if (!frame.imagePixel(x, y, px, py)) continue;
-                const Vec3 c = renderSample<F>(scene, frame, px, py, pass, sampleRays);
-                accum[(size_t)y * frame.accumWidth() + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
-                rays += sampleRays;
-            }
-        }
-    }
-    return rays;
-}
-
-template <FeatureMask F>
-struct TileVariant {
-    static constexpr auto value = &renderTilePasses<F>;
-};
-constexpr auto kTileVariants = makeVariantTable<TileVariant>();
-
 class CpuBackend final : public Backend {
 public:
-    explicit CpuBackend(unsigned threads) : pool_(threads) {}
+    explicit CpuBackend(unsigned threads) : pool_(threads), kernels_(selectCpuKernels()) {}
 
     std::string name() const override { return "cpu"; }
     std::string deviceName() const override { return std::to_string(pool_.threadCount()) + " CPU threads"; }
@@ -105,7 +75,7 @@ public:
         const uint32_t tilesY = (height + kTileSize - 1) / kTileSize;
         const uint32_t tileCount = tilesX * tilesY;
         std::atomic<uint64_t> rays{0};
-        const auto renderTile = kTileVariants[sampleVariantFor(view_.features)];
+        const TileRenderFn renderTile = kernels_.renderTile[sampleVariantFor(view_.features)];
         pool_.parallelFor(tileCount, 1, [&](size_t tile, size_t) {
             const uint32_t x0 = (uint32_t(tile) % tilesX) * kTileSize, y0 = (uint32_t(tile) / tilesX) * kTileSize;
             const Tile t{x0, y0, std::min(x0 + kTileSize, width), std::min(y0 + kTileSize, height)};
@@ -123,13 +93,14 @@ public:
         constexpr size_t kChunk = 4096;
         const auto start = std::chrono::steady_clock::now();
         pool_.parallelFor(queries.size(), kChunk, [&](size_t begin, size_t end) {
-            for (size_t i = begin; i < end; ++i) out[i] = answerRayQuery(view_, queries[i], kind);
+            kernels_.answerRayQueries(view_, queries.data() + begin, end - begin, kind, out.data() + begin);
         });
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 
 private:
     ThreadPool pool_;  // started with the backend, for every pass it renders
+    const CpuKernels& kernels_;
     SceneArrays arrays_;
     SceneView view_{};
     uint32_t width_ = 0, height_ = 0;
