@@ -24,7 +24,7 @@ struct RenderStats {
     bool fixedGrid = false;             // --fixed-grid
     std::string blocks;                 // describeBlocks of the strata a pass took
     double estimatedRelError = NAN;     // error_probe.h, or error_estimate.h's halves; NaN when neither can tell
-    uint32_t probePixels = 0;           // the error probe's lattice (0: estimated from the halves)
+    uint32_t probePixels = 0;           // the error probe's pixels (0: estimated from the halves)
     bool estimateBalanced = false;      // unbiased: from the probe, or from halves of whole 2-cycle windows
     double targetError = 0.0;           // --target-error (0 = none)
     bool reachedTarget = false;

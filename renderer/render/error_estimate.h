@@ -29,7 +29,7 @@ struct ErrorEstimate {
     double meanValue = 0.0;   // mean channel value of the image
     uint32_t passes = 0;      // samples per pixel (of the first pixel; all pixels get the same passes)
     uint32_t secondHalfPasses = 0;
-    uint32_t probePixels = 0;  // > 0: estimated from the error probe's lattice of this many pixels (error_probe.h)
+    uint32_t probePixels = 0;  // > 0: estimated from an error probe of this many pixels (error_probe.h)
 };
 
 ErrorEstimate estimateError(const std::vector<AccumPixel>& accum);

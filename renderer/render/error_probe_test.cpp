@@ -104,12 +104,12 @@ const char* kAreaLightScene =
 // the right pixels and the probe is the image's own estimator.
 class ErrorProbeOn : public ::testing::TestWithParam<BackendChoice> {};
 
-TEST_P(ErrorProbeOn, BackendRendersTheLatticePixelsWithTheProbeSeed) {
+TEST_P(ErrorProbeOn, BackendRendersTheDrawnPixelsWithTheProbeSeed) {
     const BackendChoice choice = GetParam();
     std::string device;
     if (choice == BackendChoice::Cuda && !cudaDeviceAvailable(device))
         GTEST_SKIP() << "no CUDA device (" << (device.empty() ? "this build has no CUDA backend" : device)
-                     << "): the CUDA probe's lattice is not checked";
+                     << "): the CUDA probe's pixels are not checked";
     Diagnostics diags;
     const Scene scene = readSceneText(kAreaLightScene, "probe.scene", diags);
     ASSERT_FALSE(diags.hasErrors());
