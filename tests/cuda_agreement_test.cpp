@@ -71,14 +71,6 @@ constexpr double kPoissonZ = 3.0;
 constexpr double kNudges[2] = {1.0 + 7 * 0x1p-23, 1.0 - 5 * 0x1p-23};
 constexpr double kThirdNudge = 1.0 + 11 * 0x1p-23;  // only for the calibration test
 
-std::vector<std::string> scenesInDirectory() {
-    std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(sourcePath("scenes")))
-        if (entry.path().extension() == ".scene") names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 RenderRequest smallRequest(BackendChoice backend) {
     const unsigned threads = std::max(2u, std::thread::hardware_concurrency());
     return {.passes = kPasses, .threads = threads, .seed = kSeed, .backend = backend, .width = kSize, .height = kSize};
@@ -196,7 +188,7 @@ TEST(CudaAgreementScenes, ShippedScenesAreAllListed) {
     std::vector<std::string> sorted = listed;
     std::sort(sorted.begin(), sorted.end());
     EXPECT_EQ(sorted, listed) << "keep kShippedScenes sorted";
-    EXPECT_EQ(scenesInDirectory(), sorted) << "every scene in scenes/ must be in kShippedScenes";
+    EXPECT_EQ(shippedSceneFiles(), sorted) << "every scene in scenes/ must be in kShippedScenes";
 }
 
 class CudaAgreement : public ::testing::TestWithParam<const char*> {

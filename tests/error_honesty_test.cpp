@@ -90,14 +90,6 @@ TEST_P(ErrorHonesty, DefaultRenderStatesItsTrueErrorWithinAFactorOf1_5) {
     EXPECT_LT(estimate, truth * factor);
 }
 
-std::vector<std::string> seedScenes() {
-    std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(sourcePath("scenes")))
-        if (entry.path().extension() == ".scene") names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 std::string testName(const ::testing::TestParamInfo<std::string>& info) {
     std::string name = std::filesystem::path(info.param).stem().string();
     for (char& c : name)
@@ -105,7 +97,7 @@ std::string testName(const ::testing::TestParamInfo<std::string>& info) {
     return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(SeedScenes, ErrorHonesty, ::testing::ValuesIn(seedScenes()), testName);
+INSTANTIATE_TEST_SUITE_P(SeedScenes, ErrorHonesty, ::testing::ValuesIn(shippedSceneFiles()), testName);
 
 }  // namespace
 }  // namespace trazo::test

@@ -44,4 +44,12 @@ std::vector<std::string> listDir(const std::string& dir) {
     return names;
 }
 
+std::vector<std::string> shippedSceneFiles() {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(sourcePath("scenes")))
+        if (entry.path().extension() == ".scene") names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
 }  // namespace trazo::test

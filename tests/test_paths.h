@@ -13,5 +13,6 @@ std::string readFileText(const std::string& path);     // whole file, empty when
 // A fresh, empty folder tempPath(name), so "nothing else was left behind" is a listing; and that listing, sorted.
 std::string freshDir(const std::string& name);
 std::vector<std::string> listDir(const std::string& dir);
+std::vector<std::string> shippedSceneFiles();          // scenes/*.scene file names, sorted
 
 }  // namespace trazo::test
