@@ -41,8 +41,8 @@ DirtyFlags drawMaterialsPanel(Scene& scene, PanelState& state, Gestures& gesture
     MaterialDraft draft{m, {}, {}};  // the reader's rows act on its draft
     DirtyFlags dirty = editRows(materialTable(), draft, kDirtyScene, &gestures);
     if (dirty) m = draft.material;
-    for (const TextureSlot& slot : textureSlots()) {
-        const bool changed = comboIndex(std::string(slot.name).c_str(), m.*slot.index, textures, "(none)");
+    for (size_t s = 0; s < kTextureSlotCount; ++s) {
+        const bool changed = comboIndex(std::string(textureSlots()[s].name).c_str(), m.textures[s], textures, "(none)");
         trackGesture(gestures, changed);
         if (changed) dirty |= kDirtyScene;
     }

@@ -36,8 +36,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     texture.source = path;
     texture.image = image;
     scene.textures.push_back(texture);
-    scene.materials[0].diffuseTexture = 0;
-    scene.materials[0].normalTexture = 0;
+    scene.materials[0].textures[kDiffuseTexture] = 0;
+    scene.materials[0].textures[kNormalTexture] = 0;
     auto quad = std::make_shared<MeshData>();
     quad->positions = {Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0)};
     quad->normals = {Vec3(0, 0, 1)};

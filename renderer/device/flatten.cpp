@@ -20,18 +20,12 @@ constexpr float kDegrees = 3.14159265358979f / 180.0f;
 
 MaterialData toMaterialData(const Material& m) {
     MaterialData d{};
-    d.diffuse = m.diffuseColor;
-    d.specular = m.specularColor;
-    d.emissive = m.emissiveColor;
-    d.roughness = m.roughness;
-    d.opacity = m.opacity;
-    d.refractionIndex = m.refractionIndex;
-    d.reflectionHalfAngle = 0.5f * m.reflectionAngleDegrees * kDegrees;
-    d.reflectionAmount = m.reflectionAmount;
-    d.diffuseTexture = m.diffuseTexture;
-    d.specularTexture = m.specularTexture;
-    d.emissiveTexture = m.emissiveTexture;
-    d.normalTexture = m.normalTexture;
+#define TRAZO_X(HostType, hostName, fallback, Type, name, toKernel, ...) d.name = toKernel(m.hostName);
+#define TRAZO_NO_SLOTS()
+    TRAZO_MATERIAL_FIELDS(TRAZO_X, TRAZO_NO_SLOTS)
+#undef TRAZO_NO_SLOTS
+#undef TRAZO_X
+    for (int s = 0; s < kTextureSlotCount; ++s) d.textures[s] = m.textures[size_t(s)];
     return d;
 }
 
@@ -54,17 +48,6 @@ struct MaterialTable {
         return (uint32_t)material;
     }
 };
-
-FeatureMask materialFeatures(const MaterialData& m, const RenderSettings& s) {
-    FeatureMask f = 0;
-    const bool reflects = materialCanReflect(m, s);
-    if (reflects) f |= kFeatureReflection;
-    if (reflects && m.reflectionHalfAngle > 0.0f) f |= kFeatureGlossy;
-    if (m.opacity < 1.0f) f |= kFeatureRefraction;
-    if (!isBlack(m.emissive)) f |= kFeatureEmissive;
-    if (materialHasTextures(m)) f |= kFeatureTextures;
-    return f;
-}
 
 // A warning at the object's block when its material has textures its kind gives no coordinates for.
 template <class Host, class Shape>
@@ -91,12 +74,8 @@ void flattenTextures(const Scene& scene, SceneArrays& out) {
         }
         index = remap[index];
     };
-    for (MaterialData& m : out.materials) {
-        place(m.diffuseTexture);
-        place(m.specularTexture);
-        place(m.emissiveTexture);
-        place(m.normalTexture);
-    }
+    for (MaterialData& m : out.materials)
+        for (int32_t& texture : m.textures) place(texture);
 }
 
 // The object's bounds, padded: the shapes' own tests are exact, the box test must never be the one that misses.

@@ -1,5 +1,5 @@
 // SceneArrays: the owning host copy of the flattened scene (what Backend::upload takes), the element types
-// that are not an object kind's (materials, lights), and hostView(), the SceneView of host-resident arrays.
+// that are not an object kind's or the material's (lights), and hostView(), the SceneView of host-resident arrays.
 #pragma once
 
 #include <cstdint>
@@ -10,32 +10,10 @@
 #include "objects/rectangle.h"
 #include "objects/scene_view.h"
 #include "objects/visit_object.h"  // every object kind's header
+#include "shading/material.h"
 #include "shading/texture.h"
 
 namespace trazo {
-
-struct MaterialData {
-    Vec3 diffuse;
-    Vec3 specular;
-    Vec3 emissive;
-    float roughness;
-    float opacity;
-    float refractionIndex;
-    float reflectionHalfAngle;  // radians; 0 = mirror
-    float reflectionAmount;
-    int32_t diffuseTexture, specularTexture, emissiveTexture, normalTexture;  // into textures; -1 = none
-};
-
-// Whether any of the material's textures needs texture coordinates.
-TRAZO_HD bool materialHasTextures(const MaterialData& m) {
-    return m.diffuseTexture >= 0 || m.specularTexture >= 0 || m.emissiveTexture >= 0 || m.normalTexture >= 0;
-}
-
-// Whether the material reflects at all under these settings (a mirror or glossy lobe, before any depth limit).
-TRAZO_HD bool materialCanReflect(const MaterialData& m, const RenderSettings& s) {
-    return !isBlack(m.specular) && m.reflectionAmount > 0.0f && m.opacity > 0.0f && s.reflectionQuality >= 1 &&
-           s.reflectionSteps >= 1;
-}
 
 struct PointLightData {
     Vec3 position;

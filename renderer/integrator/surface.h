@@ -21,15 +21,17 @@ TRAZO_HD SurfacePoint surfaceAt(const SceneView& scene, const ObjectRef& o, cons
 TRAZO_HD void applyTextures(const SceneView& scene, MaterialData& m, SurfacePoint& s) {
     if (!s.hasUv) return;
     const Vec3* texels = scene.texels.data;
-    if (m.diffuseTexture >= 0) m.diffuse *= sampleTexture(scene.textures[m.diffuseTexture], texels, s.u, s.v);
-    if (m.specularTexture >= 0) m.specular *= sampleTexture(scene.textures[m.specularTexture], texels, s.u, s.v);
-    if (m.emissiveTexture >= 0) m.emissive *= sampleTexture(scene.textures[m.emissiveTexture], texels, s.u, s.v);
-    if (m.normalTexture >= 0) {
+    const int32_t kd = m.textures[kDiffuseTexture], ks = m.textures[kSpecularTexture];
+    const int32_t ke = m.textures[kEmissiveTexture], normalMap = m.textures[kNormalTexture];
+    if (kd >= 0) m.diffuse *= sampleTexture(scene.textures[kd], texels, s.u, s.v);
+    if (ks >= 0) m.specular *= sampleTexture(scene.textures[ks], texels, s.u, s.v);
+    if (ke >= 0) m.emissive *= sampleTexture(scene.textures[ke], texels, s.u, s.v);
+    if (normalMap >= 0) {
         // The tangent frame made orthonormal about the shading normal, keeping its handedness.
         const Vec3 tRaw = s.tangent - s.n * dot(s.n, s.tangent);
         const Vec3 t = dot(tRaw, tRaw) > 1e-12f ? normalize(tRaw) : anyOrthonormal(s.n);
         const Vec3 b = dot(cross(s.n, t), s.bitangent) < 0.0f ? -cross(s.n, t) : cross(s.n, t);
-        s.n = perturbNormal(s.n, t, b, sampleTexture(scene.textures[m.normalTexture], texels, s.u, s.v));
+        s.n = perturbNormal(s.n, t, b, sampleTexture(scene.textures[normalMap], texels, s.u, s.v));
     }
 }
 

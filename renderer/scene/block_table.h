@@ -1,6 +1,7 @@
 // Block tables (host): one table of parameter rows per scene and CSG block, as SPEC.md §3–§4 lists them. They
 // drive the readers, the scene writer, the viewer's edit widgets, the "did you mean" hints, and a test that
-// compares them with SPEC.md. Adding a parameter is one struct field (scene.h) and one row (scene_tables.cpp).
+// compares them with SPEC.md. Adding a parameter is one struct field (scene.h) and one row (scene_tables.cpp);
+// a Material parameter is one row of shading/material.h's list.
 #pragma once
 
 #include <array>
@@ -27,18 +28,16 @@ struct TextureDraft {
     SourceLocation nameAt, sourceAt;
 };
 
-// The texture parameters of a Material and the index each sets once resolved, in table order.
-struct TextureSlot {
+// The texture parameters of a Material (shading/material.h TRAZO_TEXTURE_SLOTS), by TextureSlot.
+struct TextureSlotInfo {
     std::string_view name, doc;
-    int32_t Material::*index;
 };
-constexpr int kTextureSlotCount = 4;
-const std::array<TextureSlot, kTextureSlotCount>& textureSlots();
+const std::array<TextureSlotInfo, kTextureSlotCount>& textureSlots();
 
 struct MaterialDraft {
     Material material;
     SourceLocation nameAt;
-    std::array<NameRef, kTextureSlotCount> textures;  // by textureSlots() order
+    std::array<NameRef, kTextureSlotCount> textures;  // by TextureSlot
 };
 
 template <class T>

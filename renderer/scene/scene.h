@@ -2,6 +2,7 @@
 // Plain C++ (STL allowed); flatten() turns it into the device arrays the kernels read.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -10,6 +11,7 @@
 #include "core/affine.h"
 #include "core/vec3.h"
 #include "scene/diagnostic.h"
+#include "shading/material.h"
 
 namespace trazo {
 
@@ -66,28 +68,29 @@ struct Texture {
     SourceLocation where;
 };
 
-constexpr int32_t kNoTexture = -1;
 constexpr int32_t kDefaultMaterial = -1;  // an object without `Material` uses the Material defaults
 
+constexpr std::array<int32_t, kTextureSlotCount> noTextures() {
+    std::array<int32_t, kTextureSlotCount> none{};
+    for (int32_t& slot : none) slot = kNoTexture;
+    return none;
+}
+
+// The Material block as read (shading/material.h lists its parameters and their defaults).
 struct Material {
     std::string name;
-    Vec3 diffuseColor{0.9f, 0.9f, 0.9f};
-    Vec3 specularColor{0.8f, 0.8f, 0.8f};
-    Vec3 emissiveColor{0, 0, 0};
-    int32_t diffuseTexture = kNoTexture;  // indices into Scene::textures
-    int32_t specularTexture = kNoTexture;
-    int32_t emissiveTexture = kNoTexture;
-    int32_t normalTexture = kNoTexture;
-    float roughness = 0.5f;
-    float opacity = 1.0f;
-    float refractionIndex = 1.0f;
-    float reflectionAngleDegrees = 0.0f;  // full cone angle; 0 = mirror
-    float reflectionAmount = 0.0f;
+#define TRAZO_X(Type, name, fallback, ...) Type name = fallback;
+#define TRAZO_NO_SLOTS()
+    TRAZO_MATERIAL_FIELDS(TRAZO_X, TRAZO_NO_SLOTS)
+#undef TRAZO_NO_SLOTS
+#undef TRAZO_X
+    std::array<int32_t, kTextureSlotCount> textures = noTextures();  // by TextureSlot; into Scene::textures
     SourceLocation where;
 
     bool usesTextures() const {
-        return diffuseTexture != kNoTexture || specularTexture != kNoTexture || emissiveTexture != kNoTexture ||
-               normalTexture != kNoTexture;
+        for (int32_t t : textures)
+            if (t != kNoTexture) return true;
+        return false;
     }
 };
 

@@ -145,7 +145,7 @@ private:
         if (!checkUnique("material", m.name, d.nameAt, declaredMaterials_, index)) return;
         for (size_t s = 0; s < textureSlots().size(); ++s) {
             if (!d.textures[s].name.empty()) {
-                m.*textureSlots()[s].index = resolve(d.textures[s], "texture", textures_, declaredTextures_, index);
+                m.textures[s] = resolve(d.textures[s], "texture", textures_, declaredTextures_, index);
             }
         }
         m.where = block.where;

@@ -193,10 +193,10 @@ AreaLight
     expectVec(m.diffuseColor, 0.1f, 0.2f, 0.3f);
     expectVec(m.specularColor, 0.4f, 0.5f, 0.6f);
     expectVec(m.emissiveColor, 0.7f, 0.8f, 0.9f);
-    EXPECT_EQ(m.diffuseTexture, 0);
-    EXPECT_EQ(m.specularTexture, 1);
-    EXPECT_EQ(m.emissiveTexture, 0);
-    EXPECT_EQ(m.normalTexture, 1);
+    EXPECT_EQ(m.textures[kDiffuseTexture], 0);
+    EXPECT_EQ(m.textures[kSpecularTexture], 1);
+    EXPECT_EQ(m.textures[kEmissiveTexture], 0);
+    EXPECT_EQ(m.textures[kNormalTexture], 1);
     EXPECT_FLOAT_EQ(m.roughness, 0.25f);
     EXPECT_FLOAT_EQ(m.opacity, 0.75f);
     EXPECT_FLOAT_EQ(m.refractionIndex, 1.5f);
@@ -285,10 +285,7 @@ TEST(SceneReader, EmptyBlocksTakeTheSpecDefaults) {
     expectVec(m.diffuseColor, 0.9f, 0.9f, 0.9f);
     expectVec(m.specularColor, 0.8f, 0.8f, 0.8f);
     expectVec(m.emissiveColor, 0, 0, 0);
-    EXPECT_EQ(m.diffuseTexture, kNoTexture);
-    EXPECT_EQ(m.specularTexture, kNoTexture);
-    EXPECT_EQ(m.emissiveTexture, kNoTexture);
-    EXPECT_EQ(m.normalTexture, kNoTexture);
+    EXPECT_EQ(m.textures, noTextures());
     EXPECT_FLOAT_EQ(m.roughness, 0.5f);
     EXPECT_FLOAT_EQ(m.opacity, 1);
     EXPECT_FLOAT_EQ(m.refractionIndex, 1);

@@ -126,21 +126,20 @@ BlockInfo infoOf(std::string_view name, std::span<const ParamSpec<Target>> table
 
 }  // namespace
 
-const std::array<TextureSlot, kTextureSlotCount>& textureSlots() {
-    static const std::array<TextureSlot, kTextureSlotCount> slots = {{
-        {"DiffuseTexture", "texture multiplying DiffuseColor", &Material::diffuseTexture},
-        {"SpecularTexture", "texture multiplying SpecularColor", &Material::specularTexture},
-        {"EmissiveTexture", "texture multiplying EmissiveColor", &Material::emissiveTexture},
-        {"NormalTexture", "tangent-space normal map (meshes only)", &Material::normalTexture},
+const std::array<TextureSlotInfo, kTextureSlotCount>& textureSlots() {
+    static const std::array<TextureSlotInfo, kTextureSlotCount> slots = {{
+#define TRAZO_X(slot, keyword, doc) {keyword, doc},
+        TRAZO_TEXTURE_SLOTS(TRAZO_X)
+#undef TRAZO_X
     }};
     return slots;
 }
 
 MaterialDraft materialDraft(const Material& material, const std::vector<Texture>& textures) {
     MaterialDraft d{material, {}, {}};
-    for (int s = 0; s < kTextureSlotCount; ++s) {
-        const int32_t index = material.*textureSlots()[size_t(s)].index;
-        if (index >= 0 && size_t(index) < textures.size()) d.textures[size_t(s)].name = textures[size_t(index)].name;
+    for (size_t s = 0; s < kTextureSlotCount; ++s) {
+        const int32_t index = material.textures[s];
+        if (index >= 0 && size_t(index) < textures.size()) d.textures[s].name = textures[size_t(index)].name;
     }
     return d;
 }
@@ -183,13 +182,21 @@ std::span<const ParamSpec<TextureDraft>> textureTable() {
 
 namespace {
 
-// The Material's texture parameters, one row per textureSlots() entry.
-std::vector<ParamSpec<MaterialDraft>> textureSlotRows() {
+// The Material's rows: shading/material.h's list, with the texture slots where the list places them.
+std::vector<ParamSpec<MaterialDraft>> materialRows() {
     std::vector<ParamSpec<MaterialDraft>> rows;
-    for (size_t s = 0; s < textureSlots().size(); ++s) {
-        rows.push_back(nameRefRow<MaterialDraft>({.name = textureSlots()[s].name, .doc = textureSlots()[s].doc},
+    auto add = [&](const ParamSpec<Material>& row) {
+        rows.push_back(lift<MaterialDraft, Material>(&MaterialDraft::material, {row}).front());
+    };
+#define TRAZO_X(HostType, name, fallback, Type, kernelName, toKernel, keyword, check, unit, doc) \
+    add(field(keyword, &Material::name, doc, Check::check, ValueUnit::unit));
+#define TRAZO_SLOTS()                                                                                       \
+    for (size_t s = 0; s < kTextureSlotCount; ++s)                                                          \
+        rows.push_back(nameRefRow<MaterialDraft>({.name = textureSlots()[s].name, .doc = textureSlots()[s].doc}, \
                                                  [s](auto& d) -> auto& { return d.textures[s]; }));
-    }
+    TRAZO_MATERIAL_FIELDS(TRAZO_X, TRAZO_SLOTS)
+#undef TRAZO_SLOTS
+#undef TRAZO_X
     return rows;
 }
 
@@ -199,21 +206,7 @@ std::span<const ParamSpec<MaterialDraft>> materialTable() {
     static const std::vector<ParamSpec<MaterialDraft>> rows = withDefaults(concat<ParamSpec<MaterialDraft>>({
         {textRow<MaterialDraft>({.name = "Name", .kind = ValueKind::Name, .required = true, .doc = "name objects use to refer to it"},
                     [](auto& m) -> auto& { return m.material.name; }, &MaterialDraft::nameAt)},
-        lift<MaterialDraft, Material>(&MaterialDraft::material, {
-            colour("DiffuseColor", &Material::diffuseColor, "diffuse colour (Oren–Nayar)"),
-            colour("SpecularColor", &Material::specularColor, "specular colour (Cook–Torrance); also tints reflections"),
-            colour("EmissiveColor", &Material::emissiveColor, "colour emitted without lighting"),
-        }),
-        textureSlotRows(),
-        lift<MaterialDraft, Material>(&MaterialDraft::material, {
-            field("Roughness", &Material::roughness, "0 polished … 1 rough", Check::NonNegative),
-            field("Opacity", &Material::opacity, "1 opaque … 0 fully transparent", Check::UnitInterval),
-            field("RefractionIndex", &Material::refractionIndex, "index of refraction", Check::Positive),
-            field("ReflectionAngle", &Material::reflectionAngleDegrees,
-                  "full cone angle of glossy reflections in degrees; 0 = mirror", Check::ConeAngle, ValueUnit::Degrees),
-            field("ReflectionAmount", &Material::reflectionAmount, "blend between lit colour (0) and reflection (1)",
-                  Check::UnitInterval),
-        }),
+        materialRows(),
     }));
     return rows;
 }

@@ -56,16 +56,12 @@ void expectSameScene(const Scene& a, const Scene& b) {
     for (size_t i = 0; i < a.materials.size(); ++i) {
         const Material &x = a.materials[i], &y = b.materials[i];
         EXPECT_EQ(x.name, y.name);
-        EXPECT_TRUE(same(x.diffuseColor, y.diffuseColor) && same(x.specularColor, y.specularColor) &&
-                    same(x.emissiveColor, y.emissiveColor)) << x.name;
-        EXPECT_EQ(x.diffuseTexture, y.diffuseTexture);
-        EXPECT_EQ(x.specularTexture, y.specularTexture);
-        EXPECT_EQ(x.emissiveTexture, y.emissiveTexture);
-        EXPECT_EQ(x.normalTexture, y.normalTexture);
-        EXPECT_TRUE(same(x.roughness, y.roughness) && same(x.opacity, y.opacity) &&
-                    same(x.refractionIndex, y.refractionIndex) &&
-                    same(x.reflectionAngleDegrees, y.reflectionAngleDegrees) &&
-                    same(x.reflectionAmount, y.reflectionAmount)) << x.name;
+#define TRAZO_X(Type, field, ...) EXPECT_TRUE(same(x.field, y.field)) << x.name << " " #field;
+#define TRAZO_NO_SLOTS()
+        TRAZO_MATERIAL_FIELDS(TRAZO_X, TRAZO_NO_SLOTS)
+#undef TRAZO_NO_SLOTS
+#undef TRAZO_X
+        EXPECT_EQ(x.textures, y.textures);
     }
     ASSERT_EQ(a.spheres.size(), b.spheres.size());
     for (size_t i = 0; i < a.spheres.size(); ++i) {
