@@ -125,7 +125,7 @@ Vec3 surfacePoint(const SceneView& view, std::mt19937& rng, Vec3& normal) {
 
 struct Case {
     Vec3 origin;
-    ShadowPacket packet;
+    RayPacket packet;
     uint64_t active;
 };
 
@@ -268,7 +268,7 @@ TEST(OccludedPacket, EmptySceneAndNoActiveRays) {
     Diagnostics diags;
     const Scene scene = readSceneText("Camera\n{\n    POV 0 0 5\n}\n", test::tempPath("empty.scene"), diags);
     const SceneArrays arrays = flatten(scene).arrays;
-    ShadowPacket packet{};
+    RayPacket packet{};
     for (int i = 0; i < kPacketRays; ++i) packet.dx[i] = 1.0f, packet.tMax[i] = INFINITY;
     EXPECT_EQ(occludedPacket(hostView(arrays), Vec3(0.0f), packet, ~0ull), 0u);
     const RandomScene full = makeScene(3);

@@ -51,10 +51,19 @@ TRAZO_HD Vec3 sampleReflection(const ShadingPoint& sp, Vec3 d, const MaterialDat
     return directionInCone(mirror, theta, phi);
 }
 
+// intersectScene's answer for a camera ray, when the caller traced the ray already (the CPU's tile loop traces
+// a block of camera rays together: integrator/camera_packet.h).
+struct CameraHit {
+    SurfaceHit hit;
+    bool found;
+};
+
 // Color(0) along a camera ray: the whole tree of reflected and transmitted rays, as an explicit stack.
-template <FeatureMask F>
+// kGivenHit: `given` is the camera ray's intersectScene answer (the device never passes one).
+template <FeatureMask F, bool kGivenHit = false>
 TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const StrataKey& pixelStrata,
-                             const StrataBlocks& blocks, SampleStream& rng, uint32_t& rays) {
+                             const StrataBlocks& blocks, SampleStream& rng, uint32_t& rays,
+                             const CameraHit* given = nullptr) {
     const RenderSettings& settings = scene.settings;
     PendingRay stack[kMaxPendingRays];
     int pending = 0;
@@ -68,7 +77,19 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         const PendingRay r = stack[--pending];
         ++rays;
         SurfaceHit hit;
-        if (!intersectScene(scene, r.ray, INFINITY, hit)) {
+        bool found;
+        if constexpr (kGivenHit) {
+            if (given) {  // the first ray popped is the camera ray
+                hit = given->hit;
+                found = given->found;
+                given = nullptr;
+            } else {
+                found = intersectScene(scene, r.ray, INFINITY, hit);
+            }
+        } else {
+            found = intersectScene(scene, r.ray, INFINITY, hit);
+        }
+        if (!found) {
             color += r.weight * settings.background;
             continue;
         }
@@ -131,10 +152,11 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
     return color;
 }
 
-// One sample of one pixel: the pass's block of antialiasing positions, averaged.
-template <FeatureMask F>
+// One sample of one pixel: the pass's block of antialiasing positions, averaged. kGivenHit: given[j] is the
+// intersectScene answer of position j's camera ray.
+template <FeatureMask F, bool kGivenHit = false>
 TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
-                           uint32_t pass, uint32_t& rays) {
+                           uint32_t pass, uint32_t& rays, const CameraHit* given = nullptr) {
     const uint32_t pixelIndex = py * frame.camera.width + px;
     SampleStream rng(frame.seed, pixelIndex, pass);
     const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, 1u};
@@ -144,7 +166,8 @@ TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uin
     for (uint32_t j = 0; j < positions.size; ++j) {
         float x, y;
         antialiasingPosition(k, positions.stratum(j), px, py, x, y);
-        color += traceCameraRay<F>(scene, generateCameraRay(frame.camera, x, y), pixelStrata, frame.blocks, rng, rays);
+        color += traceCameraRay<F, kGivenHit>(scene, generateCameraRay(frame.camera, x, y), pixelStrata, frame.blocks,
+                                              rng, rays, kGivenHit ? given + j : nullptr);
     }
     return positions.size == 1 ? color : color / float(positions.size);
 }

@@ -14,7 +14,7 @@
 
 namespace trazo {
 
-struct ShadowPacket;  // integrator/occluded_packet.h
+struct RayPacket;  // integrator/packet_lanes.h
 
 enum class CpuIsa : uint32_t { Sse2, Avx2, Avx512 };
 constexpr CpuIsa kCpuIsas[] = {CpuIsa::Sse2, CpuIsa::Avx2, CpuIsa::Avx512};
@@ -34,7 +34,7 @@ struct CpuKernels {
     void (*answerRayQueries)(const SceneView& scene, const RayQuery* queries, size_t count, RayQueryKind kind,
                              RayAnswer* out);
     // occludedPacket (integrator/occluded_packet.h) at this ISA's width; null in the device-paths build.
-    uint64_t (*occludedPacket)(const SceneView& scene, Vec3 origin, const ShadowPacket& rays, uint64_t active);
+    uint64_t (*occludedPacket)(const SceneView& scene, Vec3 origin, const RayPacket& rays, uint64_t active);
 };
 
 // One per translation unit: tile_render_sse2.cpp (baseline x86-64), _avx2.cpp (AVX2 + FMA), _avx512.cpp

@@ -1,0 +1,59 @@
+// Host only: the camera rays of up to 64 pixels traced together (nearestPacket: they share the pinhole as
+// origin), each completed to the CameraHit that intersectScene would give it, for renderSample<F, true>.
+#pragma once
+
+#include "integrator/camera_frame.h"
+#include "integrator/nearest_packet.h"
+#include "integrator/render_sample.h"
+
+namespace trazo {
+
+// Whether a scene's camera rays are worth tracing in packets: one camera ray per pixel and pass (renderSample's
+// given hits are then one per pixel), and no meshes or CSG solids, whose rays would all be traced again.
+inline bool cameraPacketsApply(const SceneView& scene) {
+    return antialiasingSide(scene.settings.antialiasing) == 1 && scene.topNodes.count > 0 && scene.meshes.count == 0 &&
+           scene.csgs.count == 0;
+}
+
+// renderSample's camera ray of pixel (px, py) when the antialiasing side is 1: its one position, the centre.
+inline Ray centreCameraRay(const CameraFrame& camera, uint32_t px, uint32_t py) {
+    float x, y;
+    antialiasingPosition(1, 0, px, py, x, y);
+    return generateCameraRay(camera, x, y);
+}
+
+// The rays of `active` in `rays` (directions; tMax INFINITY, overwritten) from the camera's origin: out[i] is
+// intersectScene(scene, ray i, INFINITY)'s answer.
+inline void traceCameraPacket(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, CameraHit* out) {
+    NearestHits nearest;
+    nearestPacket(scene, origin, rays, active, nearest);
+    for (uint64_t m = active; m; m &= m - 1) {
+        const int i = __builtin_ctzll(m);
+        const Ray ray{origin, Vec3(rays.dx[i], rays.dy[i], rays.dz[i])};
+        CameraHit& c = out[i];
+        if (nearest.redo & (1ull << i)) {
+            c.found = intersectScene(scene, ray, INFINITY, c.hit);
+            continue;
+        }
+        float tMax = INFINITY;
+        c.found = false;
+        const uint32_t object = nearest.object[i];
+        if (object != kNoObject) {
+            const ObjectRef& o = scene.objects[object];
+            ShapeHit h{};
+            if (o.kind == ObjectKind::Box) {  // intersectBox's normal of the face the lanes found
+                const int face = nearest.boxFace[i];
+                h.t = nearest.t[i];
+                h.normal = normalize(scene.boxes[o.index].objectFromWorld.row[face >> 1] * (face & 1 ? 1.0f : -1.0f));
+            } else {  // the same test as the traversal's, with a larger bound: the same root and normal
+                intersectObject(scene, o, ray, INFINITY, h);
+            }
+            c.hit = SurfaceHit{h.t, h.normal, object, 0, h.triangle, h.b1, h.b2};
+            tMax = h.t;
+            c.found = true;
+        }
+        if (intersectAreaLights(scene, ray, tMax, c.hit)) c.found = true;
+    }
+}
+
+}  // namespace trazo
