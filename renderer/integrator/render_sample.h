@@ -27,6 +27,13 @@ struct PendingRay {
 static_assert(sizeof(PendingRay) == 44, "pending rays are a GPU thread's largest array: keep them packed");
 static_assert(kMaxTransmissionSegments < 32, "PendingRay::segments has 5 bits");
 
+// A slot of the pending-ray stack, left uninitialised: Vec3 zero-initialises its members, and zeroing every slot
+// for each camera ray cost more than the camera ray's traversal; a slot is always written before it is read.
+union PendingSlot {
+    PendingRay ray;
+    TRAZO_HD PendingSlot() {}
+};
+
 // Antialiasing position s of the k×k sub-pixel centres (SPEC §5 Pixel).
 TRAZO_HD void antialiasingPosition(uint32_t k, uint32_t s, uint32_t px, uint32_t py, float& x, float& y) {
     x = float(px) + (float(s % k) + 0.5f) / float(k);
@@ -65,16 +72,16 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
                              const StrataBlocks& blocks, SampleStream& rng, uint32_t& rays,
                              const CameraHit* given = nullptr) {
     const RenderSettings& settings = scene.settings;
-    PendingRay stack[kMaxPendingRays];
+    PendingSlot stack[kMaxPendingRays];
     int pending = 0;
-    stack[pending++] = PendingRay{cameraRay, Vec3(1.0f), 0u, 0u, 1u};
+    stack[pending++].ray = PendingRay{cameraRay, Vec3(1.0f), 0u, 0u, 1u};
     auto push = [&](const PendingRay& r) {
-        if (pending < kMaxPendingRays) stack[pending++] = r;
+        if (pending < kMaxPendingRays) stack[pending++].ray = r;
     };
 
     Vec3 color(0.0f);
     while (pending > 0) {
-        const PendingRay r = stack[--pending];
+        const PendingRay r = stack[--pending].ray;
         ++rays;
         SurfaceHit hit;
         bool found;
