@@ -23,7 +23,7 @@ inline Ray centreCameraRay(const CameraFrame& camera, uint32_t px, uint32_t py) 
 }
 
 // The rays of `active` in `rays` (directions; tMax INFINITY, overwritten) from the camera's origin: out[i] is
-// intersectScene(scene, ray i, INFINITY)'s answer.
+// ray i and intersectScene(scene, ray i, INFINITY)'s answer.
 inline void traceCameraPacket(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, CameraHit* out) {
     NearestHits nearest;
     nearestPacket(scene, origin, rays, active, nearest);
@@ -31,6 +31,7 @@ inline void traceCameraPacket(const SceneView& scene, Vec3 origin, RayPacket& ra
         const int i = __builtin_ctzll(m);
         const Ray ray{origin, Vec3(rays.dx[i], rays.dy[i], rays.dz[i])};
         CameraHit& c = out[i];
+        c.ray = ray;
         if (nearest.redo & (1ull << i)) {
             c.found = intersectScene(scene, ray, INFINITY, c.hit);
             continue;

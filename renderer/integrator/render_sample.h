@@ -58,9 +58,10 @@ TRAZO_HD Vec3 sampleReflection(const ShadingPoint& sp, Vec3 d, const MaterialDat
     return directionInCone(mirror, theta, phi);
 }
 
-// intersectScene's answer for a camera ray, when the caller traced the ray already (the CPU's tile loop traces
+// A camera ray and its intersectScene answer, when the caller traced the ray already (the CPU's tile loop traces
 // a block of camera rays together: integrator/camera_packet.h).
 struct CameraHit {
+    Ray ray;
     SurfaceHit hit;
     bool found;
 };
@@ -159,22 +160,26 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
     return color;
 }
 
-// One sample of one pixel: the pass's block of antialiasing positions, averaged. kGivenHit: given[j] is the
-// intersectScene answer of position j's camera ray.
+// One sample of one pixel: the pass's block of antialiasing positions, averaged. kGivenHit: the scene's
+// antialiasing side is 1, and `given` is the camera ray of the pixel's one position, traced.
 template <FeatureMask F, bool kGivenHit = false>
 TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
                            uint32_t pass, uint32_t& rays, const CameraHit* given = nullptr) {
     const uint32_t pixelIndex = py * frame.camera.width + px;
     SampleStream rng(frame.seed, pixelIndex, pass);
     const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, 1u};
+    if constexpr (kGivenHit) {
+        Vec3 color(0.0f);  // the sum below, of one position
+        color += traceCameraRay<F, true>(scene, given->ray, pixelStrata, frame.blocks, rng, rays, given);
+        return color;
+    }
     const uint32_t k = antialiasingSide(scene.settings.antialiasing);
     const StrataBlock positions = pixelStrata.block(kGridAntialiasing, k * k, frame.blocks.antialiasing);
     Vec3 color(0.0f);
     for (uint32_t j = 0; j < positions.size; ++j) {
         float x, y;
         antialiasingPosition(k, positions.stratum(j), px, py, x, y);
-        color += traceCameraRay<F, kGivenHit>(scene, generateCameraRay(frame.camera, x, y), pixelStrata, frame.blocks,
-                                              rng, rays, kGivenHit ? given + j : nullptr);
+        color += traceCameraRay<F>(scene, generateCameraRay(frame.camera, x, y), pixelStrata, frame.blocks, rng, rays);
     }
     return positions.size == 1 ? color : color / float(positions.size);
 }

@@ -1,6 +1,6 @@
 // The CPU backend's hot code as a table of functions, compiled once per instruction set (tile_render_*.cpp
 // from tile_render.h) and chosen at start-up (cpu_isa.cpp): the tile renderer, the ray-query loop and the
-// shadow-ray packet query. Host only.
+// shadow-ray and camera-ray packet queries. Host only.
 #pragma once
 
 #include <array>
@@ -15,6 +15,7 @@
 namespace trazo {
 
 struct RayPacket;  // integrator/packet_lanes.h
+struct CameraHit;  // integrator/render_sample.h
 
 enum class CpuIsa : uint32_t { Sse2, Avx2, Avx512 };
 constexpr CpuIsa kCpuIsas[] = {CpuIsa::Sse2, CpuIsa::Avx2, CpuIsa::Avx512};
@@ -35,6 +36,8 @@ struct CpuKernels {
                              RayAnswer* out);
     // occludedPacket (integrator/occluded_packet.h) at this ISA's width; null in the device-paths build.
     uint64_t (*occludedPacket)(const SceneView& scene, Vec3 origin, const RayPacket& rays, uint64_t active);
+    // traceCameraPacket (integrator/camera_packet.h) at this ISA's width; null in the device-paths build.
+    void (*traceCameraPacket)(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, CameraHit* out);
 };
 
 // One per translation unit: tile_render_sse2.cpp (baseline x86-64), _avx2.cpp (AVX2 + FMA), _avx512.cpp

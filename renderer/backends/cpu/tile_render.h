@@ -106,14 +106,18 @@ void answerRayQueries(const SceneView& scene, const RayQuery* queries, size_t co
 uint64_t occludedPacketEntry(const SceneView& scene, Vec3 origin, const RayPacket& rays, uint64_t active) {
     return occludedPacket(scene, origin, rays, active);
 }
+void traceCameraPacketEntry(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, CameraHit* out) {
+    traceCameraPacket(scene, origin, rays, active, out);
+}
 #endif
 
 constexpr CpuKernels makeCpuKernels(CpuIsa isa) {
     constexpr auto tiles = makeVariantTable<TileVariant>();
-    CpuKernels k{isa, {}, &answerRayQueries, nullptr};
+    CpuKernels k{isa, {}, &answerRayQueries, nullptr, nullptr};
     for (uint32_t i = 0; i < kSampleVariantCount; ++i) k.renderTile[i] = tiles[i];
 #if TRAZO_SHADOW_PACKETS
     k.occludedPacket = &occludedPacketEntry;
+    k.traceCameraPacket = &traceCameraPacketEntry;
 #endif
     return k;
 }
