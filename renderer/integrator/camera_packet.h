@@ -46,6 +46,9 @@ inline void traceCameraPacket(const SceneView& scene, Vec3 origin, RayPacket& ra
                 const int face = nearest.boxFace[i];
                 h.t = nearest.t[i];
                 h.normal = normalize(scene.boxes[o.index].objectFromWorld.row[face >> 1] * (face & 1 ? 1.0f : -1.0f));
+            } else if (o.kind == ObjectKind::Sphere) {  // the lanes computed intersectSphere's normal
+                h.t = nearest.t[i];
+                h.normal = Vec3(nearest.nx[i], nearest.ny[i], nearest.nz[i]);
             } else {  // the same test as the traversal's, with a larger bound: the same root and normal
                 intersectObject(scene, o, ray, INFINITY, h);
             }

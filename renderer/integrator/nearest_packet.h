@@ -16,6 +16,7 @@ struct NearestHits {
     uint32_t object[kPacketRays];  // index into SceneView::objects, or kNoObject (none, or redo)
     float t[kPacketRays];
     uint8_t boxFace[kPacketRays];  // where the object is a box: boxHits' face
+    float nx[kPacketRays], ny[kPacketRays], nz[kPacketRays];  // where it is a sphere: the hit's normal
     uint64_t redo = 0;  // the rays whose answer intersectScene must give
 };
 
@@ -32,8 +33,8 @@ inline float nextFloatUp(float t) {
 
 // Lane by lane: the rays of `hits` found object `index` at tHit (≤ their bound); the nearer replaces the best,
 // an equal one is a tie. bound[i] stays just above ray i's best t, so that an object at that very t is seen.
-inline void takeNearer(uint64_t hits, int offset, LaneF tHit, const LaneI* boxFace, uint32_t index,
-                       NearestHits& out, float* bound, uint64_t& ties) {
+inline void takeNearer(uint64_t hits, int offset, LaneF tHit, const LaneI* boxFace, const V3* normal,
+                       uint32_t index, NearestHits& out, float* bound, uint64_t& ties) {
     for (uint64_t m = hits; m; m &= m - 1) {
         const int lane = __builtin_ctzll(m), i = offset + lane;
         const float t = tHit[lane];
@@ -41,6 +42,7 @@ inline void takeNearer(uint64_t hits, int offset, LaneF tHit, const LaneI* boxFa
             out.t[i] = t;
             out.object[i] = index;
             if (boxFace) out.boxFace[i] = (uint8_t)(*boxFace)[lane];
+            if (normal) out.nx[i] = normal->x[lane], out.ny[i] = normal->y[lane], out.nz[i] = normal->z[lane];
             bound[i] = nextFloatUp(t);
             ties &= ~(1ull << i);
         } else {
@@ -60,8 +62,9 @@ inline void nearestOfObject(const SceneView& scene, uint32_t index, Vec3 origin,
             for (int g = 0; g < kGroups; ++g) {
                 const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
                 if (!lanes) continue;
-                const uint64_t hits = sphereHits(k, loadGroup(rays, g), lanes, tHit);
-                takeNearer(hits, g * kLanes, tHit, nullptr, index, out, rays.tMax, ties);
+                V3 normal;
+                const uint64_t hits = sphereHits(k, loadGroup(rays, g), lanes, tHit, &normal);
+                takeNearer(hits, g * kLanes, tHit, nullptr, &normal, index, out, rays.tMax, ties);
             }
             return;
         }
@@ -72,7 +75,7 @@ inline void nearestOfObject(const SceneView& scene, uint32_t index, Vec3 origin,
                 if (!lanes) continue;
                 LaneI face;
                 const uint64_t hits = boxHits(box, origin, loadGroup(rays, g), lanes, tHit, face);
-                takeNearer(hits, g * kLanes, tHit, &face, index, out, rays.tMax, ties);
+                takeNearer(hits, g * kLanes, tHit, &face, nullptr, index, out, rays.tMax, ties);
             }
             return;
         }
@@ -82,7 +85,7 @@ inline void nearestOfObject(const SceneView& scene, uint32_t index, Vec3 origin,
                 const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
                 if (!lanes) continue;
                 const uint64_t hits = cylinderHits(cyl, origin, loadGroup(rays, g), lanes, tHit);
-                takeNearer(hits, g * kLanes, tHit, nullptr, index, out, rays.tMax, ties);
+                takeNearer(hits, g * kLanes, tHit, nullptr, nullptr, index, out, rays.tMax, ties);
             }
             return;
         }

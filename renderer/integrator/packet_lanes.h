@@ -161,8 +161,9 @@ inline SphereSetup sphereSetup(const SphereShape& s, Vec3 origin) {
     // sphereRoots' reject uses f = origin − centre in plain float: twoSum's hi is that very sum.
     return k;
 }
-// Returns the lanes of `live` that hit; tHit holds their t (the nearer root in (0, tMax), else the farther).
-inline uint64_t sphereHits(const SphereSetup& k, const Group& ray, uint64_t live, LaneF& tHit) {
+// Returns the lanes of `live` that hit; tHit holds their t (the nearer root in (0, tMax), else the farther) and,
+// when asked for, normal their hit.normal.
+inline uint64_t sphereHits(const SphereSetup& k, const Group& ray, uint64_t live, LaneF& tHit, V3* normal = nullptr) {
     const V3& d = ray.d;
     const LaneF dd = dot(d, d);
     const V3 fd = cross(k.f, d);
@@ -192,6 +193,14 @@ inline uint64_t sphereHits(const SphereSetup& k, const Group& ray, uint64_t live
     const LaneF tMax = ray.tMax;
     const LaneI nearIn = (tNear > 0.0f) & (tNear < tMax), farIn = (tFar > 0.0f) & (tFar < tMax);
     tHit = nearIn ? tNear : tFar;
+    if (normal) {  // intersectSphere's normalize(l ∓ d·halfChord)
+        const LaneF halfChord = root / a;
+        const V3 along = {d.x * halfChord, d.y * halfChord, d.z * halfChord};
+        const V3 v = {nearIn ? l.x - along.x : l.x + along.x, nearIn ? l.y - along.y : l.y + along.y,
+                      nearIn ? l.z - along.z : l.z + along.z};
+        const LaneF inv = 1.0f / sqrt(dot(v, v));
+        *normal = {v.x * inv, v.y * inv, v.z * inv};
+    }
     return live & bits(nearIn | farIn);
 }
 
