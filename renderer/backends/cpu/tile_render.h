@@ -28,30 +28,26 @@ uint64_t renderTilePassesInPackets(const SceneView& scene, const FrameParams& fr
     RayPacket packet;
     CameraHit hits[kPacketRays];
     uint32_t imageX[kPacketRays], imageY[kPacketRays], accumIndex[kPacketRays];
+    alignas(64) float pixelX[kPacketRays], pixelY[kPacketRays];
     for (uint32_t by = tile.y0; by < tile.y1; by += kPacketSide) {
         for (uint32_t bx = tile.x0; bx < tile.x1; bx += kPacketSide) {
             // The block's rays are the same in every pass (one position, the pixel's centre).
             uint64_t active = 0;
             int lane = 0;
+            for (int i = 0; i < kPacketRays; ++i) pixelX[i] = pixelY[i] = 0.0f;
             for (uint32_t y = by; y < by + kPacketSide && y < tile.y1; ++y) {
                 for (uint32_t x = bx; x < bx + kPacketSide && x < tile.x1; ++x, ++lane) {
                     uint32_t px, py;  // the accumulation's pixel (x, y) is image pixel (px, py): frame.target
                     if (!frame.imagePixel(x, y, px, py)) continue;
-                    const Ray ray = centreCameraRay(frame.camera, px, py);
-                    packet.dx[lane] = ray.direction.x;
-                    packet.dy[lane] = ray.direction.y;
-                    packet.dz[lane] = ray.direction.z;
+                    pixelX[lane] = float(px);
+                    pixelY[lane] = float(py);
                     imageX[lane] = px;
                     imageY[lane] = py;
                     accumIndex[lane] = y * frame.accumWidth() + x;
                     active |= 1ull << lane;
                 }
             }
-            for (int i = 0; i < kPacketRays; ++i) {
-                if (active & (1ull << i)) continue;
-                packet.dx[i] = packet.dy[i] = 0.0f;
-                packet.dz[i] = 1.0f;
-            }
+            aimCameraRays(frame.camera, pixelX, pixelY, packet);  // centreCameraRay of each pixel
             for (int i = 0; i < kPacketRays; ++i) packet.tMax[i] = INFINITY;
             traceCameraPacket(scene, frame.camera.origin, packet, active, hits);
             for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
