@@ -85,6 +85,7 @@ public:
     }
 
     void readAccumulation(std::vector<AccumPixel>& out) override { out = accum_; }
+    const std::vector<AccumPixel>* hostAccumulation() const override { return &accum_; }
     uint64_t raysTraced() const override { return rays_; }
 
     using Backend::traceRays;
