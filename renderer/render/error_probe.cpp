@@ -15,6 +15,10 @@ constexpr uint32_t kProbeSeedSalt = 0x70726f62u;  // "prob": the probe's seed is
 double squaredValue(const AccumPixel& p) {
     if (!(p.count > 0.0)) return 0.0;
     double s = 0.0;
+    if (p.count == 1.0) {  // the first pass's: x / 1 is x, so the same sum without its three divisions
+        for (int c = 0; c < 3; ++c) s += p.sum[c] * p.sum[c];
+        return s;
+    }
     for (int c = 0; c < 3; ++c) s += (p.sum[c] / p.count) * (p.sum[c] / p.count);
     return s;
 }
