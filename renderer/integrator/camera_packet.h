@@ -1,5 +1,5 @@
 // Host only: the camera rays of up to 64 pixels traced together (nearestPacket: they share the pinhole as
-// origin), each completed to the CameraHit that intersectScene would give it, for renderSample<F, true>.
+// origin), each completed to the CameraHit that intersectScene would give it, for renderSample's given hit.
 #pragma once
 
 #include "integrator/camera_frame.h"
@@ -7,13 +7,6 @@
 #include "integrator/render_sample.h"
 
 namespace trazo {
-
-// Whether a scene's camera rays are worth tracing in packets: one camera ray per pixel and pass (renderSample's
-// given hits are then one per pixel), and no meshes or CSG solids, whose rays would all be traced again.
-inline bool cameraPacketsApply(const SceneView& scene) {
-    return antialiasingSide(scene.settings.antialiasing) == 1 && scene.topNodes.count > 0 && scene.meshes.count == 0 &&
-           scene.csgs.count == 0;
-}
 
 // renderSample's camera ray of pixel (px, py) when the antialiasing side is 1: its one position, the centre.
 inline Ray centreCameraRay(const CameraFrame& camera, uint32_t px, uint32_t py) {
@@ -54,13 +47,16 @@ inline void traceCameraPacket(const SceneView& scene, Vec3 origin, RayPacket& ra
         const Ray ray{origin, Vec3(rays.dx[i], rays.dy[i], rays.dz[i])};
         CameraHit& c = out[i];
         c.ray = ray;
-        if (nearest.redo & (1ull << i)) {
+        const uint32_t object = nearest.object[i];
+        const ObjectKind kind = object != kNoObject ? scene.objects[object].kind : ObjectKind::Sphere;
+        // Ties, and the rays whose nearest object is a cylinder (the lanes keep no cylinder normal), take
+        // intersectScene whole.
+        if ((nearest.redo & (1ull << i)) || (kind != ObjectKind::Box && kind != ObjectKind::Sphere)) {
             c.found = intersectScene(scene, ray, INFINITY, c.hit);
             continue;
         }
         float tMax = INFINITY;
         c.found = false;
-        const uint32_t object = nearest.object[i];
         if (object != kNoObject) {
             const ObjectRef& o = scene.objects[object];
             ShapeHit h{};
@@ -73,11 +69,9 @@ inline void traceCameraPacket(const SceneView& scene, Vec3 origin, RayPacket& ra
                 }
                 h.t = nearest.t[i];
                 h.normal = faceNormal;
-            } else if (o.kind == ObjectKind::Sphere) {  // the lanes computed intersectSphere's normal
+            } else {  // a sphere: the lanes computed intersectSphere's normal
                 h.t = nearest.t[i];
                 h.normal = Vec3(nearest.nx[i], nearest.ny[i], nearest.nz[i]);
-            } else {  // the same test as the traversal's, with a larger bound: the same root and normal
-                intersectObject(scene, o, ray, INFINITY, h);
             }
             c.hit = SurfaceHit{h.t, h.normal, object, 0, h.triangle, h.b1, h.b2};
             tMax = h.t;

@@ -101,7 +101,7 @@ TEST(NearestPacket, CameraHitsMatchIntersectSceneOnEveryIsa) {
                 const CpuKernels* k = cpuKernelsFor(isa);
                 if (!k) continue;
                 copy = rays;
-                k->traceCameraPacket(scene.view, origin, copy, active, got);
+                k->cameraPackets().traceCameraPacket(scene.view, origin, copy, active, got);
                 for (int i = 0; i < kPacketRays; ++i)
                     if (active >> i & 1) expectSameHit(scene.view, got[i], found[i], expected[i], cpuIsaName(isa), seed, i);
                 ++compared;
@@ -152,7 +152,7 @@ TEST(NearestPacket, RenderSampleWithGivenHitsIsTheSame) {
                 for (int i = 0; i < kPacketRays; ++i) {
                     uint32_t raysOne = 0, raysGiven = 0;
                     const Vec3 one = renderSample<kSpecialisedFeatures>(scene.view, frame, bx + i % 8, by + i / 8, 0, raysOne);
-                    const Vec3 given = renderSample<kSpecialisedFeatures, true>(scene.view, frame, bx + i % 8, by + i / 8, 0,
+                    const Vec3 given = renderSample<kSpecialisedFeatures>(scene.view, frame, bx + i % 8, by + i / 8, 0,
                                                                         raysGiven, &hits[i]);
                     ASSERT_EQ(std::memcmp(&one, &given, sizeof one), 0) << "seed " << seed << " pixel " << bx + i % 8;
                     ASSERT_EQ(raysOne, raysGiven);

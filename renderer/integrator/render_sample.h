@@ -67,8 +67,8 @@ struct CameraHit {
 };
 
 // Color(0) along a camera ray: the whole tree of reflected and transmitted rays, as an explicit stack.
-// kGivenHit: `given` is the camera ray's intersectScene answer (the device never passes one).
-template <FeatureMask F, bool kGivenHit = false>
+// `given`: the camera ray's intersectScene answer, or null (host x86 only: the device never passes one).
+template <FeatureMask F>
 TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const StrataKey& pixelStrata,
                              const StrataBlocks& blocks, SampleStream& rng, uint32_t& rays,
                              const CameraHit* given = nullptr) {
@@ -86,17 +86,14 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         ++rays;
         SurfaceHit hit;
         bool found;
-        if constexpr (kGivenHit) {
-            if (given) {  // the first ray popped is the camera ray
-                hit = given->hit;
-                found = given->found;
-                given = nullptr;
-            } else {
-                found = intersectScene(scene, r.ray, INFINITY, hit);
-            }
-        } else {
-            found = intersectScene(scene, r.ray, INFINITY, hit);
-        }
+#if TRAZO_SHADOW_PACKETS
+        if (given) {  // the first ray popped is the camera ray
+            hit = given->hit;
+            found = given->found;
+            given = nullptr;
+        } else
+#endif
+        found = intersectScene(scene, r.ray, INFINITY, hit);
         if (!found) {
             color += r.weight * settings.background;
             continue;
@@ -160,19 +157,21 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
     return color;
 }
 
-// One sample of one pixel: the pass's block of antialiasing positions, averaged. kGivenHit: the scene's
-// antialiasing side is 1, and `given` is the camera ray of the pixel's one position, traced.
-template <FeatureMask F, bool kGivenHit = false>
+// One sample of one pixel: the pass's block of antialiasing positions, averaged. `given` (host x86 only, else
+// null): the scene's antialiasing side is 1, and this is the camera ray of the pixel's one position, traced.
+template <FeatureMask F>
 TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
                            uint32_t pass, uint32_t& rays, const CameraHit* given = nullptr) {
     const uint32_t pixelIndex = py * frame.camera.width + px;
     SampleStream rng(frame.seed, pixelIndex, pass);
     const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, 1u};
-    if constexpr (kGivenHit) {
+#if TRAZO_SHADOW_PACKETS
+    if (given) {
         Vec3 color(0.0f);  // the sum below, of one position
-        color += traceCameraRay<F, true>(scene, given->ray, pixelStrata, frame.blocks, rng, rays, given);
+        color += traceCameraRay<F>(scene, given->ray, pixelStrata, frame.blocks, rng, rays, given);
         return color;
     }
+#endif
     const uint32_t k = antialiasingSide(scene.settings.antialiasing);
     const StrataBlock positions = pixelStrata.block(kGridAntialiasing, k * k, frame.blocks.antialiasing);
     Vec3 color(0.0f);
