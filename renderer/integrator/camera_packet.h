@@ -63,7 +63,8 @@ inline void traceCameraPacket(const SceneView& scene, Vec3 origin, RayPacket& ra
             if (o.kind == ObjectKind::Box) {  // intersectBox's normal of the face the lanes found
                 const int face = nearest.boxFace[i];
                 if (object != faceObject || face != lastFace) {
-                    faceNormal = normalize(scene.boxes[o.index].objectFromWorld.row[face >> 1] * (face & 1 ? 1.0f : -1.0f));
+                    const Vec3 row = scene.boxes[o.index].objectFromWorld.row[face >> 1];
+                    faceNormal = normalize(row * (face & 1 ? 1.0f : -1.0f));
                     faceObject = object;
                     lastFace = face;
                 }

@@ -103,7 +103,8 @@ TEST(NearestPacket, CameraHitsMatchIntersectSceneOnEveryIsa) {
                 copy = rays;
                 k->cameraPackets().traceCameraPacket(scene.view, origin, copy, active, got);
                 for (int i = 0; i < kPacketRays; ++i)
-                    if (active >> i & 1) expectSameHit(scene.view, got[i], found[i], expected[i], cpuIsaName(isa), seed, i);
+                    if (active >> i & 1)
+                        expectSameHit(scene.view, got[i], found[i], expected[i], cpuIsaName(isa), seed, i);
                 ++compared;
             }
         }
@@ -151,10 +152,11 @@ TEST(NearestPacket, RenderSampleWithGivenHitsIsTheSame) {
                 traceCameraPacket(scene.view, camera.origin, rays, ~0ull, hits);
                 for (int i = 0; i < kPacketRays; ++i) {
                     uint32_t raysOne = 0, raysGiven = 0;
-                    const Vec3 one = renderSample<kSpecialisedFeatures>(scene.view, frame, bx + i % 8, by + i / 8, 0, raysOne);
-                    const Vec3 given = renderSample<kSpecialisedFeatures>(scene.view, frame, bx + i % 8, by + i / 8, 0,
-                                                                        raysGiven, &hits[i]);
-                    ASSERT_EQ(std::memcmp(&one, &given, sizeof one), 0) << "seed " << seed << " pixel " << bx + i % 8;
+                    const uint32_t px = bx + i % 8, py = by + i / 8;
+                    const Vec3 one = renderSample<kSpecialisedFeatures>(scene.view, frame, px, py, 0, raysOne);
+                    const Vec3 given =
+                        renderSample<kSpecialisedFeatures>(scene.view, frame, px, py, 0, raysGiven, &hits[i]);
+                    ASSERT_EQ(std::memcmp(&one, &given, sizeof one), 0) << "seed " << seed << " pixel " << px << ", " << py;
                     ASSERT_EQ(raysOne, raysGiven);
                     ++compared;
                 }
