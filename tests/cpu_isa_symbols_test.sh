@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# The AVX2 and AVX-512 kernels' objects (renderer/backends/cpu/tile_render_*.cpp) define no global code but
+# The AVX2 and AVX-512 kernels' objects (renderer/backends/cpu/tile_render_*.cpp, camera_tile_render_*.cpp) define no global code but
 # their entry point: every inline function and template they emit stays local (-fno-weak), so no baseline
 # caller can be linked to an AVX copy and the binary runs on any x86-64. Arguments: trazo_renderer's objects.
 set -euo pipefail
 checked=0
 for object in "$@"; do
   case "$object" in
+    *camera_tile_render_avx2.cpp.o) entry=cameraPacketKernelsAvx2 ;;
+    *camera_tile_render_avx512.cpp.o) entry=cameraPacketKernelsAvx512 ;;
     *tile_render_avx2.cpp.o) entry=cpuKernelsAvx2 ;;
     *tile_render_avx512.cpp.o) entry=cpuKernelsAvx512 ;;
     *) continue ;;

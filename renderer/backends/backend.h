@@ -50,6 +50,10 @@ public:
     virtual void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) = 0;
     // Copies the accumulation buffer (row 0 = top) to the host.
     virtual void readAccumulation(std::vector<AccumPixel>& out) = 0;
+    // The accumulation itself where it is host memory (the CPU backend's), to read without a copy until the next
+    // call that renders or resizes; null where readAccumulation must copy it. A copy of a large image costs more
+    // than a one-pass render of a simple scene (its fresh pages fault in one by one).
+    virtual const std::vector<AccumPixel>* hostAccumulation() const { return nullptr; }
     // The error probe (render/error_probe.h): a second accumulation, of the image pixels `pixels` lists
     // (indices y·width + x) rendered again with an independent seed. resizeProbe takes the list and
     // (re)allocates and clears it; reset() clears it too; readProbe gives one AccumPixel per listed pixel. A

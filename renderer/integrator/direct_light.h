@@ -108,7 +108,7 @@ constexpr uint32_t kMinShadowPacket = 4;
 // Host: brdf.eval(l) for the rays of `lanes` in group g of the packet, in SIMD lanes: PointBrdf::eval with
 // evalOrenNayar and evalCookTorrance operation for operation (minOf(a, b) is a < b ? a : b, maxOf a > b ? a : b),
 // expf lane by lane (libm's, as the scalar code calls it).
-inline void evalBrdfLanes(const PointBrdf& brdf, const ShadowPacket& packet, int g, uint64_t lanes, float* fx,
+inline void evalBrdfLanes(const PointBrdf& brdf, const RayPacket& packet, int g, uint64_t lanes, float* fx,
                           float* fy, float* fz) {
     using namespace packet_detail;
     const int o = g * kLanes;
@@ -172,7 +172,7 @@ inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, c
                                uint32_t& rays) {
     Vec3 lightSum(0.0f);
     const Vec3 below = bumpedOrigin(sp.p, -(sp.ng * sp.offset));  // rayOrigin towards −ng
-    ShadowPacket packet;
+    RayPacket packet;
     alignas(64) float column[kPacketRays], row[kPacketRays];  // of each cell in the light's grid
     const uint32_t stepU = cells.blocks % light.cellsU, stepV = cells.blocks / light.cellsU;
     alignas(64) float fx[kPacketRays], fy[kPacketRays], fz[kPacketRays];  // brdf.eval of the visible cells

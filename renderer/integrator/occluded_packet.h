@@ -1,290 +1,30 @@
 // Host only: up to 64 shadow rays from one origin (one shading point's block of area-light cells) traced
 // together through the top-level BVH, with a mask of the rays still in play per node, and spheres, boxes
-// and cylinders tested against several rays at once (as many lanes as the translation unit's ISA has: 4 SSE2,
-// 8 AVX2, 16 AVX-512; renderer/backends/cpu/tile_render.h). Each ray's answer is occluded()'s bit for bit:
-// a ray meets the same boxes (the slab test of intersectChildren, the same IEEE operations in the same order),
-// so it reaches the same leaves, and the lanes repeat each shape's scalar test operation for operation.
+// and cylinders tested against several rays at once (packet_lanes.h). Each ray's answer is occluded()'s bit for
+// bit: a ray meets the same boxes (the slab test of intersectChildren, the same IEEE operations in the same
+// order), so it reaches the same leaves, and the lanes repeat each shape's scalar test operation for operation.
 // Meshes and CSG solids take their scalar objectBlocks, ray by ray. aimShadowRays computes the rays of an
 // area light's cells in the same lanes (integrator/direct_light.h, shadeCellsTogether).
 #pragma once
 
-#if TRAZO_DEVICE_PATHS || defined(__CUDACC__)
-#error "occluded_packet.h is host code: the device traces its shadow rays one by one"
-#endif
-
-#include <immintrin.h>
-
-#include <cmath>
-#include <cstdint>
-#include <cstring>
-
-#include "integrator/scene_intersect.h"
+#include "integrator/packet_lanes.h"
 #include "objects/rectangle.h"
 
 namespace trazo {
 
-constexpr int kPacketRays = 64;  // one bit per ray in a uint64_t
-
-// The rays: directions and the ends of their segments (0, tMax), structure of arrays.
-struct ShadowPacket {
-    alignas(64) float dx[kPacketRays];
-    alignas(64) float dy[kPacketRays];
-    alignas(64) float dz[kPacketRays];
-    alignas(64) float tMax[kPacketRays];
-};
-
 namespace packet_detail {
 
-#if defined(__AVX512F__)
-constexpr int kLanes = 16;
-#elif defined(__AVX2__) && defined(__FMA__)
-constexpr int kLanes = 8;
-#else
-constexpr int kLanes = 4;
-#endif
-typedef float LaneF __attribute__((vector_size(kLanes * 4)));
-typedef int32_t LaneI __attribute__((vector_size(kLanes * 4)));
-typedef uint32_t LaneU __attribute__((vector_size(kLanes * 4)));
-constexpr int kGroups = kPacketRays / kLanes;
-constexpr uint64_t kGroupBits = kLanes == 64 ? ~0ull : (1ull << kLanes) - 1;
-
-inline LaneF splat(float x) {
-    LaneF v;
-    for (int i = 0; i < kLanes; ++i) v[i] = x;
-    return v;
-}
-inline LaneF load(const float* p) {
-    LaneF v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
-// Bit i set when lane i of the comparison result is true.
-inline uint64_t bits(LaneI m) {
-#if defined(__AVX512F__)
-    return (uint64_t)_mm512_cmpneq_epi32_mask((__m512i)m, _mm512_setzero_si512());
-#elif defined(__AVX2__) && defined(__FMA__)
-    return (uint64_t)(unsigned)_mm256_movemask_ps((__m256)m);
-#else
-    return (uint64_t)(unsigned)_mm_movemask_ps((__m128)m);
-#endif
-}
-inline LaneF sqrt(LaneF x) {
-#if defined(__AVX512F__)
-    return (LaneF)_mm512_maskz_sqrt_ps((__mmask16)0xffff, (__m512)x);  // _mm512_sqrt_ps: a false -Wmaybe-uninitialized in GCC 12
-#elif defined(__AVX2__) && defined(__FMA__)
-    return (LaneF)_mm256_sqrt_ps((__m256)x);
-#else
-    return (LaneF)_mm_sqrt_ps((__m128)x);
-#endif
-}
-// a·b + c rounded once, as fmaf: one instruction with FMA, else fmaf lane by lane (SSE2 has no fused
-// multiply-add, and a product in double then a sum would round twice).
-inline LaneF fma(LaneF a, LaneF b, LaneF c) {
-#if defined(__AVX512F__)
-    return (LaneF)_mm512_fmadd_ps((__m512)a, (__m512)b, (__m512)c);
-#elif defined(__AVX2__) && defined(__FMA__)
-    return (LaneF)_mm256_fmadd_ps((__m256)a, (__m256)b, (__m256)c);
-#else
-    LaneF r;
-    for (int i = 0; i < kLanes; ++i) r[i] = fmaf(a[i], b[i], c[i]);
-    return r;
-#endif
-}
-inline LaneF copysign(LaneF magnitude, LaneF sign) {
-    const LaneI signBit = (LaneI)splat(-0.0f);
-    return (LaneF)(((LaneI)magnitude & ~signBit) | ((LaneI)sign & signBit));
-}
-inline LaneF fabs(LaneF x) { return (LaneF)((LaneI)x & ~(LaneI)splat(-0.0f)); }
-
-// SampleStream{key, dimension}.next() lane by lane (core/rng.h: hashCombine, hashU32, bitsToUnitFloat).
-inline LaneF unitFloats(uint32_t key, LaneU dimension) {
-    LaneU x = key ^ (dimension + 0x9e3779b9u + (key << 6) + (key >> 2));
-    x ^= x >> 17;
-    x *= 0xed5ad4bbu;
-    x ^= x >> 11;
-    x *= 0xac4c1b51u;
-    x ^= x >> 15;
-    x *= 0x31848babu;
-    x ^= x >> 14;
-    return __builtin_convertvector((LaneI)(x >> 8), LaneF) * (1.0f / 16777216.0f);
-}
-
-// The lanes of one ray group, and of a Vec3 per lane.
-struct V3 {
-    LaneF x, y, z;
-};
-inline LaneF dot(const V3& a, const V3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline LaneF dot(Vec3 a, const V3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline V3 cross(const V3& a, const V3& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-inline V3 cross(Vec3 a, const V3& b) {
-    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-// differenceOfProducts(a, b, c, d) of exact_float.h.
-inline LaneF differenceOfProducts(LaneF a, LaneF b, LaneF c, LaneF d) {
-    const LaneF cd = c * d;
-    const LaneF error = fma(-c, d, cd);
-    return fma(a, b, -cd) + error;
-}
-inline V3 crossAccurate(Vec3 u, const V3& v) {
-    return {differenceOfProducts(splat(u.y), v.z, splat(u.z), v.y),
-            differenceOfProducts(splat(u.z), v.x, splat(u.x), v.z),
-            differenceOfProducts(splat(u.x), v.y, splat(u.y), v.x)};
-}
-
-// The rays of group g.
-struct Group {
-    V3 d;
-    LaneF tMax;
-};
-inline Group loadGroup(const ShadowPacket& p, int g) {
-    const int o = g * kLanes;
-    return {{load(p.dx + o), load(p.dy + o), load(p.dz + o)}, load(p.tMax + o)};
-}
-
-// sphereBlocks(s, Ray{origin, d}, 0, tMax) lane by lane: sphereRoots with what depends on the origin only
-// computed once.
-struct SphereSetup {
-    Vec3 f, fLo;
-    float reach2, r, c;
-};
-inline SphereSetup sphereSetup(const SphereShape& s, Vec3 origin) {
-    SphereSetup k;
-    const Vec3 f0 = origin - s.center;
-    const float margin = 1e-5f * (maxComponent(abs(origin)) + maxComponent(abs(s.center)) + maxComponent(abs(f0)));
-    const float reach = s.radius + margin;
-    k.reach2 = reach * reach;
-    const TwoFloat fx = twoSum(origin.x, -s.center.x);
-    const TwoFloat fy = twoSum(origin.y, -s.center.y);
-    const TwoFloat fz = twoSum(origin.z, -s.center.z);
-    k.f = Vec3(fx.hi, fy.hi, fz.hi);
-    k.fLo = Vec3(fx.lo, fy.lo, fz.lo);
-    k.r = s.radius;
-    k.c = lengthSquaredMinusSquareAccurate(k.f, k.r) + 2.0f * dot(k.f, k.fLo);
-    // sphereRoots' reject uses f = origin − centre in plain float: twoSum's hi is that very sum.
-    return k;
-}
-inline uint64_t sphereBlocks(const SphereSetup& k, const Group& ray, uint64_t live) {
-    const V3& d = ray.d;
-    const LaneF dd = dot(d, d);
-    const V3 fd = cross(k.f, d);
-    live &= bits(!(dot(fd, fd) > k.reach2 * dd));
-    if (!live) return 0;
-    const LaneF a = dd;
-    const LaneF b = dot(k.f, d) + dot(k.fLo, d);
-    const float c = k.c;
-    const V3 ca = crossAccurate(k.f, d);
-    const V3 cl = cross(k.fLo, d);
-    const V3 x = {ca.x + cl.x, ca.y + cl.y, ca.z + cl.z};
-    const V3 lc = cross(d, x);
-    const LaneF invA = 1.0f / a;
-    const V3 l = {lc.x * invA, lc.y * invA, lc.z * invA};
-    const LaneF lLength = sqrt(dot(l, l));
-    const float r = k.r;
-    const LaneI nearForm = b * b + a * fabsf(c) < a * lLength * (r + lLength);
-    const LaneF discriminant = nearForm ? fma(b, b, -a * c) : a * ((r - lLength) * (r + lLength));
-    live &= bits(discriminant >= 0.0f);
-    if (!live) return 0;
-    const LaneF root = sqrt(discriminant);
-    const LaneF q = -b - copysign(root, b);
-    const LaneF t0 = q / a;
-    const LaneF t1 = q != 0.0f ? c / q : t0;
-    const LaneI swap = t0 > t1;
-    const LaneF tNear = swap ? t1 : t0, tFar = swap ? t0 : t1;
-    const LaneF tMax = ray.tMax;
-    return live & bits(((tNear > 0.0f) & (tNear < tMax)) | ((tFar > 0.0f) & (tFar < tMax)));
-}
-
-// intersectBox(box, Ray{origin, d}, 0, tMax) lane by lane, whether it hits.
-inline uint64_t boxBlocks(const BoxShape& box, Vec3 oWorld, const Group& ray, uint64_t live) {
-    const Vec3 o = box.objectFromWorld.applyToPoint(oWorld);
-    const V3 d = {dot(box.objectFromWorld.row[0], ray.d), dot(box.objectFromWorld.row[1], ray.d),
-                  dot(box.objectFromWorld.row[2], ray.d)};
-    LaneF tEnter = splat(-INFINITY), tExit = splat(INFINITY);
-    for (int axis = 0; axis < 3; ++axis) {
-        const float oi = o[axis];
-        const LaneF di = axis == 0 ? d.x : (axis == 1 ? d.y : d.z);
-        const LaneI parallel = di == 0.0f;
-        if (oi < -0.5f || oi > 0.5f) live &= ~bits(parallel);  // parallel outside the slab: no hit
-        const LaneF tLow = (-0.5f - oi) / di;
-        const LaneF tHigh = (0.5f - oi) / di;
-        const LaneI forward = di > 0.0f;
-        const LaneF tNear = forward ? tLow : tHigh;
-        const LaneF tFar = forward ? tHigh : tLow;
-        tEnter = (~parallel & (tNear > tEnter)) ? tNear : tEnter;
-        tExit = (~parallel & (tFar < tExit)) ? tFar : tExit;
-    }
-    const LaneF tMax = ray.tMax;
-    return live & bits((tEnter <= tExit) &
-                       (((tEnter > 0.0f) & (tEnter < tMax)) | ((tExit > 0.0f) & (tExit < tMax))));
-}
-
-// intersectCylinder(c, Ray{origin, d}, 0, tMax) lane by lane, whether it hits.
-inline uint64_t cylinderBlocks(const CylinderShape& cyl, Vec3 origin, const Group& ray, uint64_t live) {
-    const Vec3 axis = cyl.axis;
-    const float r = cyl.radius;
-    const Vec3 f = origin - cyl.base;
-    const V3& d = ray.d;
-    const Vec3 fPerp = crossAccurate(axis, f);
-    const V3 dPerp = crossAccurate(axis, d);
-    const float fAlong = dot(axis, f);
-    const LaneF dAlong = dot(axis, d);
-
-    LaneF tBest = ray.tMax;
-    LaneI found = splat(0.0f) != 0.0f;  // all false
-    const LaneF a = dot(dPerp, dPerp);
-    const LaneI sideLanes = a > 0.0f;
-    if (bits(sideLanes) & live) {
-        const LaneF b = dot(fPerp, dPerp);
-        const LaneF ba = b / a;
-        const V3 l = {fPerp.x - dPerp.x * ba, fPerp.y - dPerp.y * ba, fPerp.z - dPerp.z * ba};
-        const LaneF lLength = sqrt(dot(l, l));
-        const LaneF discriminant = a * ((r - lLength) * (r + lLength));
-        const LaneI roots = sideLanes & (discriminant >= 0.0f);
-        if (bits(roots) & live) {
-            const LaneF q = -b - copysign(sqrt(discriminant), b);
-            const float c = dot(fPerp, fPerp) - r * r;
-            LaneF t0 = q / a;
-            LaneF t1 = q != 0.0f ? c / q : t0;
-            const LaneI swap = t0 > t1;
-            const LaneF first = swap ? t1 : t0, second = swap ? t0 : t1;
-            // The nearer root between the caps wins; the farther counts only when the nearer does not.
-            LaneI taken = found;  // all false
-            for (int i = 0; i < 2; ++i) {
-                const LaneF t = i == 0 ? first : second;
-                const LaneF height = fAlong + t * dAlong;
-                const LaneI hit = roots & ~taken & (t > 0.0f) & (t < tBest) & (height >= 0.0f) & (height <= cyl.height);
-                tBest = hit ? t : tBest;
-                found |= hit;
-                taken |= hit;
-            }
-        }
-    }
-    const LaneI caps = dAlong != 0.0f;
-    if (bits(caps) & live) {
-        for (int i = 0; i < 2; ++i) {
-            const float capHeight = i == 0 ? 0.0f : cyl.height;
-            const LaneF t = (capHeight - fAlong) / dAlong;
-            const V3 radial = {fPerp.x + dPerp.x * t, fPerp.y + dPerp.y * t, fPerp.z + dPerp.z * t};
-            const LaneI hit = caps & (t > 0.0f) & (t < tBest) & (dot(radial, radial) <= r * r);
-            tBest = hit ? t : tBest;
-            found |= hit;
-        }
-    }
-    return live & bits(found);
-}
-
 // The rays of `live` that object o blocks.
-inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, Vec3 origin, const ShadowPacket& rays,
+inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, Vec3 origin, const RayPacket& rays,
                                    uint64_t live) {
     uint64_t blocked = 0;
+    LaneF tHit;  // unused: any hit in (0, tMax) blocks
     switch (o.kind) {
         case ObjectKind::Sphere: {
             const SphereSetup k = sphereSetup(scene.spheres[o.index], origin);
             for (int g = 0; g < kGroups; ++g) {
                 const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                if (lanes) blocked |= sphereBlocks(k, loadGroup(rays, g), lanes) << (g * kLanes);
+                if (lanes) blocked |= sphereHits(k, loadGroup(rays, g), lanes, tHit) << (g * kLanes);
             }
             return blocked;
         }
@@ -292,7 +32,7 @@ inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, V
             const BoxShape& box = scene.boxes[o.index];
             for (int g = 0; g < kGroups; ++g) {
                 const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                if (lanes) blocked |= boxBlocks(box, origin, loadGroup(rays, g), lanes) << (g * kLanes);
+                if (lanes) blocked |= boxHits(box, origin, loadGroup(rays, g), lanes, tHit) << (g * kLanes);
             }
             return blocked;
         }
@@ -300,7 +40,7 @@ inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, V
             const CylinderShape& cyl = scene.cylinders[o.index];
             for (int g = 0; g < kGroups; ++g) {
                 const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                if (lanes) blocked |= cylinderBlocks(cyl, origin, loadGroup(rays, g), lanes) << (g * kLanes);
+                if (lanes) blocked |= cylinderHits(cyl, origin, loadGroup(rays, g), lanes, tHit) << (g * kLanes);
             }
             return blocked;
         }
@@ -320,11 +60,6 @@ inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, V
     }
 }
 
-struct PacketEntry {
-    uint32_t ref;
-    uint64_t rays;
-};
-
 }  // namespace packet_detail
 
 // The shadow rays of shadeFromPoint towards points of a light's rectangle, lane by lane (see aimShadowRays).
@@ -340,7 +75,7 @@ struct AimedRays {
 // shading and geometric normals; above and below: its ray origins towards ±ng (ShadingPoint::rayOrigin).
 inline AimedRays aimShadowRays(const RectangleShape& rect, uint32_t cellsU, uint32_t cellsV, const float* column,
                                const float* row, uint32_t key, uint32_t dimension, Vec3 p, Vec3 n, Vec3 ng,
-                               Vec3 above, Vec3 below, ShadowPacket& out) {
+                               Vec3 above, Vec3 below, RayPacket& out) {
     using namespace packet_detail;
     AimedRays aimed;
     const float width = float(cellsU), height = float(cellsV);
@@ -376,17 +111,10 @@ inline AimedRays aimShadowRays(const RectangleShape& rect, uint32_t cellsU, uint
 
 // The rays of `active` (bit i: ray i of `rays`) that something blocks: occluded(scene, Ray{origin, ray i's
 // direction}, ray i's tMax) for each, bit for bit.
-inline uint64_t occludedPacket(const SceneView& scene, Vec3 origin, const ShadowPacket& rays, uint64_t active) {
+inline uint64_t occludedPacket(const SceneView& scene, Vec3 origin, const RayPacket& rays, uint64_t active) {
     using namespace packet_detail;
     if (scene.topNodes.count == 0 || !active) return 0;
-    // makeBoxRay's inverse direction; intersectChildren enters a slab through its max plane when it is < 0.
-    alignas(64) float inv[3][kPacketRays];
-    for (int i = 0; i < kPacketRays; i += kLanes) {
-        const LaneF x = 1.0f / load(rays.dx + i), y = 1.0f / load(rays.dy + i), z = 1.0f / load(rays.dz + i);
-        std::memcpy(inv[0] + i, &x, sizeof x);
-        std::memcpy(inv[1] + i, &y, sizeof y);
-        std::memcpy(inv[2] + i, &z, sizeof z);
-    }
+    const InverseDirections inv = inverseDirections(rays);
     const WideBvhNode* nodes = scene.topNodes.data;
     PacketEntry stack[kBvhWidth * kMaxBvhDepth + 1];
     int size = 0;
@@ -405,31 +133,9 @@ inline uint64_t occludedPacket(const SceneView& scene, Vec3 origin, const Shadow
             }
             continue;
         }
-        // intersectChildren per ray: (bound − origin)·invDirection, the near plane's bound by the sign of
-        // invDirection, the same selects, the same exit widening.
         const WideBvhNode& node = nodes[e.ref];
-        uint64_t childRays[kBvhWidth] = {0, 0, 0, 0};
-        for (int g = 0; g < kGroups; ++g) {
-            const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-            if (!lanes) continue;
-            const int o = g * kLanes;
-            const LaneF invAxis[3] = {load(inv[0] + o), load(inv[1] + o), load(inv[2] + o)};
-            const LaneI maxFirst[3] = {invAxis[0] < 0.0f, invAxis[1] < 0.0f, invAxis[2] < 0.0f};
-            const LaneF tMax = load(rays.tMax + o);
-            for (int c = 0; c < kBvhWidth; ++c) {
-                if (node.child[c] == kBvhEmptyLane) continue;
-                LaneF t0 = splat(0.0f), t1 = tMax;
-                for (int axis = 0; axis < 3; ++axis) {
-                    const float lo = node.bounds[axis][0][c] - origin[axis];
-                    const float hi = node.bounds[axis][1][c] - origin[axis];
-                    const LaneF tNear = (maxFirst[axis] ? splat(hi) : splat(lo)) * invAxis[axis];
-                    const LaneF tFar = (maxFirst[axis] ? splat(lo) : splat(hi)) * invAxis[axis];
-                    t0 = tNear > t0 ? tNear : t0;
-                    t1 = tFar < t1 ? tFar : t1;
-                }
-                childRays[c] |= (bits(t0 <= t1 * kBoxExitScale) & lanes) << o;
-            }
-        }
+        uint64_t childRays[kBvhWidth];
+        raysEnteringChildren(node, origin, inv, rays.tMax, live, childRays);
         for (int c = kBvhWidth - 1; c >= 0; --c)
             if (childRays[c]) stack[size++] = {node.child[c], childRays[c]};
     }

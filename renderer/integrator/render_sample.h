@@ -27,6 +27,13 @@ struct PendingRay {
 static_assert(sizeof(PendingRay) == 44, "pending rays are a GPU thread's largest array: keep them packed");
 static_assert(kMaxTransmissionSegments < 32, "PendingRay::segments has 5 bits");
 
+// A slot of the pending-ray stack, left uninitialised: Vec3 zero-initialises its members, and zeroing every slot
+// for each camera ray cost more than the camera ray's traversal; a slot is always written before it is read.
+union PendingSlot {
+    PendingRay ray;
+    TRAZO_HD PendingSlot() {}
+};
+
 // Antialiasing position s of the k×k sub-pixel centres (SPEC §5 Pixel).
 TRAZO_HD void antialiasingPosition(uint32_t k, uint32_t s, uint32_t px, uint32_t py, float& x, float& y) {
     x = float(px) + (float(s % k) + 0.5f) / float(k);
@@ -51,24 +58,43 @@ TRAZO_HD Vec3 sampleReflection(const ShadingPoint& sp, Vec3 d, const MaterialDat
     return directionInCone(mirror, theta, phi);
 }
 
+// A camera ray and its intersectScene answer, when the caller traced the ray already (the CPU's tile loop traces
+// a block of camera rays together: integrator/camera_packet.h).
+struct CameraHit {
+    Ray ray;
+    SurfaceHit hit;
+    bool found;
+};
+
 // Color(0) along a camera ray: the whole tree of reflected and transmitted rays, as an explicit stack.
+// `given`: the camera ray's intersectScene answer, or null (host x86 only: the device never passes one).
 template <FeatureMask F>
 TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const StrataKey& pixelStrata,
-                             const StrataBlocks& blocks, SampleStream& rng, uint32_t& rays) {
+                             const StrataBlocks& blocks, SampleStream& rng, uint32_t& rays,
+                             const CameraHit* given = nullptr) {
     const RenderSettings& settings = scene.settings;
-    PendingRay stack[kMaxPendingRays];
+    PendingSlot stack[kMaxPendingRays];
     int pending = 0;
-    stack[pending++] = PendingRay{cameraRay, Vec3(1.0f), 0u, 0u, 1u};
+    stack[pending++].ray = PendingRay{cameraRay, Vec3(1.0f), 0u, 0u, 1u};
     auto push = [&](const PendingRay& r) {
-        if (pending < kMaxPendingRays) stack[pending++] = r;
+        if (pending < kMaxPendingRays) stack[pending++].ray = r;
     };
 
     Vec3 color(0.0f);
     while (pending > 0) {
-        const PendingRay r = stack[--pending];
+        const PendingRay r = stack[--pending].ray;
         ++rays;
         SurfaceHit hit;
-        if (!intersectScene(scene, r.ray, INFINITY, hit)) {
+        bool found;
+#if TRAZO_SHADOW_PACKETS
+        if (given) {  // the first ray popped is the camera ray
+            hit = given->hit;
+            found = given->found;
+            given = nullptr;
+        } else
+#endif
+        found = intersectScene(scene, r.ray, INFINITY, hit);
+        if (!found) {
             color += r.weight * settings.background;
             continue;
         }
@@ -131,13 +157,21 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
     return color;
 }
 
-// One sample of one pixel: the pass's block of antialiasing positions, averaged.
+// One sample of one pixel: the pass's block of antialiasing positions, averaged. `given` (host x86 only, else
+// null): the scene's antialiasing side is 1, and this is the camera ray of the pixel's one position, traced.
 template <FeatureMask F>
 TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
-                           uint32_t pass, uint32_t& rays) {
+                           uint32_t pass, uint32_t& rays, const CameraHit* given = nullptr) {
     const uint32_t pixelIndex = py * frame.camera.width + px;
     SampleStream rng(frame.seed, pixelIndex, pass);
     const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, 1u};
+#if TRAZO_SHADOW_PACKETS
+    if (given) {
+        Vec3 color(0.0f);  // the sum below, of one position
+        color += traceCameraRay<F>(scene, given->ray, pixelStrata, frame.blocks, rng, rays, given);
+        return color;
+    }
+#endif
     const uint32_t k = antialiasingSide(scene.settings.antialiasing);
     const StrataBlock positions = pixelStrata.block(kGridAntialiasing, k * k, frame.blocks.antialiasing);
     Vec3 color(0.0f);

@@ -33,6 +33,20 @@ TRAZO_HD bool intersectObject(const SceneView& scene, const ObjectRef& o, const 
     return intersectObject(scene, o, ray, tMax, stack, hit);
 }
 
+// The nearest light rectangle along the ray in (0, tMax), if any: out and tMax become its hit.
+TRAZO_HD bool intersectAreaLights(const SceneView& scene, const Ray& ray, float& tMax, SurfaceHit& out) {
+    bool found = false;
+    ShapeHit hit;
+    for (uint32_t i = 0; i < scene.areaLights.count; ++i) {
+        if (intersectRectangle(scene.areaLights[i].rect, ray, 0.0f, tMax, hit)) {
+            tMax = hit.t;
+            out = SurfaceHit{hit.t, hit.normal, kNoObject, i, 0, 0.0f, 0.0f};
+            found = true;
+        }
+    }
+    return found;
+}
+
 // Nearest object or area-light rectangle along the ray, in (0, tMax).
 TRAZO_HD bool intersectScene(const SceneView& scene, const Ray& ray, float tMax, SurfaceHit& out) {
     bool found = false;
@@ -60,15 +74,7 @@ TRAZO_HD bool intersectScene(const SceneView& scene, const Ray& ray, float tMax,
             found = true;
         }
     }
-    ShapeHit hit;
-    for (uint32_t i = 0; i < scene.areaLights.count; ++i) {
-        if (intersectRectangle(scene.areaLights[i].rect, ray, 0.0f, tMax, hit)) {
-            tMax = hit.t;
-            out = SurfaceHit{hit.t, hit.normal, kNoObject, i, 0, 0.0f, 0.0f};
-            found = true;
-        }
-    }
-    return found;
+    return intersectAreaLights(scene, ray, tMax, out) || found;
 }
 
 // True when any object blocks the segment (0, tMax). Light rectangles cast no shadow (SPEC §5).

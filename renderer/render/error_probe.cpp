@@ -15,6 +15,10 @@ constexpr uint32_t kProbeSeedSalt = 0x70726f62u;  // "prob": the probe's seed is
 double squaredValue(const AccumPixel& p) {
     if (!(p.count > 0.0)) return 0.0;
     double s = 0.0;
+    if (p.count == 1.0) {  // the first pass's: x / 1 is x, so the same sum without its three divisions
+        for (int c = 0; c < 3; ++c) s += p.sum[c] * p.sum[c];
+        return s;
+    }
     for (int c = 0; c < 3; ++c) s += (p.sum[c] / p.count) * (p.sum[c] / p.count);
     return s;
 }
@@ -40,16 +44,29 @@ ErrorProbe designProbe(const std::vector<AccumPixel>& image, uint32_t width, uin
     // Small images: at least ~64 pixels, all of them below 64.
     const double base = std::max(std::min(kProbeMaxBaseShare, double(kProbeBasePixels) / double(n)),
                                  std::min(1.0, double(kProbeMinPixels) / double(n)));
-    double total = 0.0;
-    for (const AccumPixel& p : image) total += squaredValue(p);
-    // π_i = min(1, base + s_i/τ) with Σ s_i/τ = the bright share's expected draw.
-    const double perValue = total > 0.0 ? kProbeBrightShare * base * double(n) / total : 0.0;
+    // π_i = min(1, base + s_i/τ) with Σ s_i/τ = the bright share's expected draw: perValue = share / Σ s_i.
+    const double share = kProbeBrightShare * base * double(n);
     const uint32_t key = hashCombine(seed, kProbeSeedSalt + 1u);
+    auto uniform = [&](uint32_t i) { return double(hashCombine(key, i)) * 0x1p-32; };  // in [0, 1)
+    // One pass over the image (it is large): the total, and the pixels that may be drawn whatever the rest adds.
+    // The running total only grows, so share / running ≥ perValue, and the chance it gives is ≥ the pixel's.
+    struct Candidate {
+        uint32_t index;
+        double value;
+    };
+    std::vector<Candidate> candidates;
+    double total = 0.0;
     for (size_t i = 0; i < n; ++i) {
-        const double chance = std::min(1.0, base + perValue * squaredValue(image[i]));
-        const double u = double(hashCombine(key, (uint32_t)i)) * 0x1p-32;  // uniform in [0, 1)
-        if (u < chance) {
-            probe.pixels.push_back((uint32_t)i);
+        const double value = squaredValue(image[i]);
+        total += value;
+        const double bound = total > 0.0 ? share / total : 0.0;
+        if (uniform((uint32_t)i) < std::min(1.0, base + bound * value)) candidates.push_back({(uint32_t)i, value});
+    }
+    const double perValue = total > 0.0 ? share / total : 0.0;
+    for (const Candidate& c : candidates) {
+        const double chance = std::min(1.0, base + perValue * c.value);
+        if (uniform(c.index) < chance) {
+            probe.pixels.push_back(c.index);
             probe.weights.push_back(1.0 / chance);
         }
     }

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/rng.h"
 #include "device/flatten.h"
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
@@ -59,6 +60,65 @@ TEST(ErrorProbe, DrawsAboutTheBaseShareAndEveryBrightPixel) {
     EXPECT_TRUE(designProbe({}, 0, 0, 4).empty());
     EXPECT_NE(probeFrame(FrameParams{}).seed, FrameParams{}.seed);
     EXPECT_TRUE(probeFrame(FrameParams{}).target.probe);
+}
+
+// The draw as the header states it, in two plain passes: the total first, then each pixel's chance.
+ErrorProbe probeByTheFormula(const std::vector<AccumPixel>& image, uint32_t seed) {
+    auto squared = [](const AccumPixel& p) {
+        double s = 0.0;
+        if (p.count > 0.0)
+            for (int c = 0; c < 3; ++c) s += (p.sum[c] / p.count) * (p.sum[c] / p.count);
+        return s;
+    };
+    const size_t n = image.size();
+    const double base = std::max(std::min(kProbeMaxBaseShare, double(kProbeBasePixels) / double(n)),
+                                 std::min(1.0, double(kProbeMinPixels) / double(n)));
+    double total = 0.0;
+    for (const AccumPixel& p : image) total += squared(p);
+    const double perValue = total > 0.0 ? kProbeBrightShare * base * double(n) / total : 0.0;
+    const uint32_t key = hashCombine(seed, 0x70726f62u + 1u);
+    ErrorProbe probe;
+    for (size_t i = 0; i < n; ++i) {
+        const double chance = std::min(1.0, base + perValue * squared(image[i]));
+        if (double(hashCombine(key, (uint32_t)i)) * 0x1p-32 < chance) {
+            probe.pixels.push_back((uint32_t)i);
+            probe.weights.push_back(1.0 / chance);
+        }
+    }
+    return probe;
+}
+
+// designProbe's one pass over the image (with its candidates) draws exactly the formula's pixels and weights:
+// images dark at the top (a small running total for long), bright at the top, a single bright pixel, all black,
+// random, after one pass and after several.
+TEST(ErrorProbe, DrawIsTheFormulasBitForBit) {
+    std::mt19937 rng(5);
+    std::exponential_distribution<double> bright(1.0);
+    for (int kind = 0; kind < 5; ++kind) {
+        for (double passes : {1.0, 3.0}) {
+            const uint32_t width = 300, height = 200;
+            std::vector<AccumPixel> image((size_t)width * height);
+            for (size_t i = 0; i < image.size(); ++i) {
+                const uint32_t y = uint32_t(i / width);
+                double v = 0.0;
+                switch (kind) {
+                    case 0: v = y < 150 ? 0.0 : bright(rng); break;    // black on top
+                    case 1: v = y < 20 ? 50.0 : 0.1 * bright(rng); break;  // a bright band on top
+                    case 2: v = i == 40000 ? 1e3 : 0.0; break;         // one bright pixel
+                    case 3: v = 0.0; break;
+                    default: v = bright(rng) * bright(rng); break;
+                }
+                image[i].count = passes;
+                for (int c = 0; c < 3; ++c) image[i].sum[c] = passes * v * (1.0 + 0.1 * c);
+            }
+            for (uint32_t seed : {1u, 9u}) {
+                const ErrorProbe expected = probeByTheFormula(image, seed);
+                const ErrorProbe got = designProbe(image, width, height, seed);
+                ASSERT_EQ(got.pixels, expected.pixels) << "kind " << kind << " passes " << passes << " seed " << seed;
+                ASSERT_EQ(got.weights, expected.weights) << "kind " << kind;
+            }
+        }
+    }
 }
 
 // Image and probe pixels drawn independently from N(mu, sigma²) per channel: the estimate recovers sigma.

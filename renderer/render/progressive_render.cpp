@@ -16,6 +16,13 @@ constexpr double kBatchSeconds = 0.2;
 
 uint64_t roundUp(uint64_t v, uint64_t step) { return (v + step - 1) / step * step; }
 
+// The backend's accumulation: in place where it is host memory, else copied into `copy`.
+const std::vector<AccumPixel>& accumulationOf(Backend& backend, std::vector<AccumPixel>& copy) {
+    if (const std::vector<AccumPixel>* inPlace = backend.hostAccumulation()) return *inPlace;
+    backend.readAccumulation(copy);
+    return copy;
+}
+
 }  // namespace
 
 bool splitsHalves(uint32_t cyclePasses) { return cyclePasses > 0 && cyclePasses < kMaxCyclePasses; }
@@ -69,8 +76,7 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
             (uint32_t)std::min<uint64_t>({batch, maxPasses - out.passes, nextCheck - out.passes});
         renderPassRange(backend, frame, limits.firstPass + out.passes, count, limits.cyclePasses);
         if (probed && out.probe.empty()) {  // drawn from the first batch's image, independent of its own passes
-            backend.readAccumulation(accum);
-            out.probe = designProbe(accum, frame.camera.width, frame.camera.height, frame.seed);
+            out.probe = designProbe(accumulationOf(backend, accum), frame.camera.width, frame.camera.height, frame.seed);
             if (out.probe.empty()) probed = false;  // nothing drawn (a 1-pixel image, by chance): the halves
             else backend.resizeProbe(out.probe.pixels);
         }

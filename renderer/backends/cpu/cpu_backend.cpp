@@ -75,7 +75,10 @@ public:
         const uint32_t tilesY = (height + kTileSize - 1) / kTileSize;
         const uint32_t tileCount = tilesX * tilesY;
         std::atomic<uint64_t> rays{0};
-        const TileRenderFn renderTile = kernels_.renderTile[sampleVariantFor(view_.features)];
+        const uint32_t variant = sampleVariantFor(view_.features);
+        const CameraPacketKernels& packets = kernels_.cameraPackets();
+        const bool inPackets = packets.available && packets.renderTile[variant] && cameraPacketsApply(view_);
+        const TileRenderFn renderTile = inPackets ? packets.renderTile[variant] : kernels_.renderTile[variant];
         pool_.parallelFor(tileCount, 1, [&](size_t tile, size_t) {
             const uint32_t x0 = (uint32_t(tile) % tilesX) * kTileSize, y0 = (uint32_t(tile) / tilesX) * kTileSize;
             const Tile t{x0, y0, std::min(x0 + kTileSize, width), std::min(y0 + kTileSize, height)};
@@ -85,6 +88,7 @@ public:
     }
 
     void readAccumulation(std::vector<AccumPixel>& out) override { out = accum_; }
+    const std::vector<AccumPixel>* hostAccumulation() const override { return &accum_; }
     uint64_t raysTraced() const override { return rays_; }
 
     using Backend::traceRays;

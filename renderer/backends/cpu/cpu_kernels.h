@@ -1,6 +1,6 @@
 // The CPU backend's hot code as a table of functions, compiled once per instruction set (tile_render_*.cpp
 // from tile_render.h) and chosen at start-up (cpu_isa.cpp): the tile renderer, the ray-query loop and the
-// shadow-ray packet query. Host only.
+// shadow-ray and camera-ray packet queries. Host only.
 #pragma once
 
 #include <array>
@@ -14,7 +14,8 @@
 
 namespace trazo {
 
-struct ShadowPacket;  // integrator/occluded_packet.h
+struct RayPacket;  // integrator/packet_lanes.h
+struct CameraHit;  // integrator/render_sample.h
 
 enum class CpuIsa : uint32_t { Sse2, Avx2, Avx512 };
 constexpr CpuIsa kCpuIsas[] = {CpuIsa::Sse2, CpuIsa::Avx2, CpuIsa::Avx512};
@@ -27,6 +28,27 @@ struct Tile {
 using TileRenderFn = uint64_t (*)(const SceneView& scene, const FrameParams& frame, Tile tile, uint32_t firstPass,
                                   uint32_t passCount, AccumPixel* accum);
 
+// The tile renderers that trace each 8×8 block's camera rays as one packet (camera_tile_render.h), for scenes
+// where cameraPacketsApply, and the packet query they use. Compiled in translation units of their own
+// (camera_tile_render_*.cpp): beside tile_render.h's code they changed GCC's inlining of it (scene9_indirect_point
+// 4% more instructions).
+struct CameraPacketKernels {
+    bool available;  // false in the device-paths build, which has no packets
+    std::array<TileRenderFn, kSampleVariantCount> renderTile;  // by sampleVariantFor(features); null: not for it
+    // traceCameraPacket (integrator/camera_packet.h) at this ISA's width.
+    void (*traceCameraPacket)(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, CameraHit* out);
+};
+const CameraPacketKernels& cameraPacketKernelsSse2();
+const CameraPacketKernels& cameraPacketKernelsAvx2();
+const CameraPacketKernels& cameraPacketKernelsAvx512();
+
+// Whether a scene's camera rays are traced in packets: one camera ray per pixel and pass (renderSample's given
+// hits are then one per pixel), and no meshes or CSG solids, whose rays would all be traced again.
+inline bool cameraPacketsApply(const SceneView& scene) {
+    return antialiasingSide(scene.settings.antialiasing) == 1 && scene.topNodes.count > 0 && scene.meshes.count == 0 &&
+           scene.csgs.count == 0;
+}
+
 struct CpuKernels {
     CpuIsa isa;
     std::array<TileRenderFn, kSampleVariantCount> renderTile;  // by sampleVariantFor(features)
@@ -34,7 +56,9 @@ struct CpuKernels {
     void (*answerRayQueries)(const SceneView& scene, const RayQuery* queries, size_t count, RayQueryKind kind,
                              RayAnswer* out);
     // occludedPacket (integrator/occluded_packet.h) at this ISA's width; null in the device-paths build.
-    uint64_t (*occludedPacket)(const SceneView& scene, Vec3 origin, const ShadowPacket& rays, uint64_t active);
+    uint64_t (*occludedPacket)(const SceneView& scene, Vec3 origin, const RayPacket& rays, uint64_t active);
+    // The camera-packet kernels of this ISA.
+    const CameraPacketKernels& (*cameraPackets)();
 };
 
 // One per translation unit: tile_render_sse2.cpp (baseline x86-64), _avx2.cpp (AVX2 + FMA), _avx512.cpp

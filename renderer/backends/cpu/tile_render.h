@@ -43,14 +43,15 @@ void answerRayQueries(const SceneView& scene, const RayQuery* queries, size_t co
 }
 
 #if TRAZO_SHADOW_PACKETS
-uint64_t occludedPacketEntry(const SceneView& scene, Vec3 origin, const ShadowPacket& rays, uint64_t active) {
+uint64_t occludedPacketEntry(const SceneView& scene, Vec3 origin, const RayPacket& rays, uint64_t active) {
     return occludedPacket(scene, origin, rays, active);
 }
 #endif
 
-constexpr CpuKernels makeCpuKernels(CpuIsa isa) {
+// cameraPackets: the camera-packet kernels of the same ISA (camera_tile_render.h).
+constexpr CpuKernels makeCpuKernels(CpuIsa isa, const CameraPacketKernels& (*cameraPackets)()) {
     constexpr auto tiles = makeVariantTable<TileVariant>();
-    CpuKernels k{isa, {}, &answerRayQueries, nullptr};
+    CpuKernels k{isa, {}, &answerRayQueries, nullptr, cameraPackets};
     for (uint32_t i = 0; i < kSampleVariantCount; ++i) k.renderTile[i] = tiles[i];
 #if TRAZO_SHADOW_PACKETS
     k.occludedPacket = &occludedPacketEntry;

@@ -4,7 +4,7 @@
 namespace trazo {
 
 namespace {
-constexpr CpuKernels kKernels = makeCpuKernels(CpuIsa::Avx2);
+constexpr CpuKernels kKernels = makeCpuKernels(CpuIsa::Avx2, &cameraPacketKernelsAvx2);
 }  // namespace
 
 const CpuKernels& cpuKernelsAvx2() { return kKernels; }

@@ -4,7 +4,7 @@
 namespace trazo {
 
 namespace {
-constexpr CpuKernels kKernels = makeCpuKernels(CpuIsa::Avx512);
+constexpr CpuKernels kKernels = makeCpuKernels(CpuIsa::Avx512, &cameraPacketKernelsAvx512);
 }  // namespace
 
 const CpuKernels& cpuKernelsAvx512() { return kKernels; }

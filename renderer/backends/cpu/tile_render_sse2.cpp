@@ -4,7 +4,7 @@
 namespace trazo {
 
 namespace {
-constexpr CpuKernels kKernels = makeCpuKernels(CpuIsa::Sse2);
+constexpr CpuKernels kKernels = makeCpuKernels(CpuIsa::Sse2, &cameraPacketKernelsSse2);
 }  // namespace
 
 const CpuKernels& cpuKernelsSse2() { return kKernels; }

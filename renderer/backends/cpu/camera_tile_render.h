@@ -1,0 +1,92 @@
+// The body of camera_tile_render_sse2/avx2/avx512.cpp: the CPU backend's tile renderer with camera packets,
+// compiled as tile_render.h is (the same -m flags per ISA, -fno-weak, -ffp-contract=off) in translation units of
+// its own (cpu_kernels.h says why). Include it nowhere else.
+#pragma once
+
+// Flattened, intersectScene's leaf copies a ShapeHit whose barycentrics only meshes set, and GCC then warns that
+// they may be used uninitialised: they are read for mesh hits only. (Before the includes: the warning points there.)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include "backends/cpu/cpu_kernels.h"
+#include "integrator/sample_variants.h"
+#if TRAZO_SHADOW_PACKETS
+#include "integrator/camera_packet.h"
+#endif
+
+namespace trazo {
+namespace {
+
+#if TRAZO_SHADOW_PACKETS
+constexpr uint32_t kPacketSide = 8;  // a block of kPacketSide² ≤ kPacketRays pixels traces its camera rays together
+static_assert(kPacketSide * kPacketSide <= (uint32_t)kPacketRays, "a block's rays fit one packet");
+
+// tile_render.h's renderTilePasses with each block's camera rays traced as one packet (traceCameraPacket), where
+// cameraPacketsApply: the same samples, bit for bit. Per pixel the passes still add in pass order. flatten:
+// everything the block loop calls is inlined into it (GCC's own choice left the shading and shadow rays out of
+// line here: 5% more instructions on scene1_point).
+template <FeatureMask F>
+__attribute__((flatten)) uint64_t renderTilePassesInPackets(const SceneView& scene, const FrameParams& frame, Tile tile,
+                                                            uint32_t firstPass, uint32_t passCount, AccumPixel* accum) {
+    uint64_t rays = 0;
+    RayPacket packet;
+    CameraHit hits[kPacketRays];
+    uint32_t imageX[kPacketRays], imageY[kPacketRays], accumIndex[kPacketRays];
+    alignas(64) float pixelX[kPacketRays], pixelY[kPacketRays];
+    for (uint32_t by = tile.y0; by < tile.y1; by += kPacketSide) {
+        for (uint32_t bx = tile.x0; bx < tile.x1; bx += kPacketSide) {
+            // The block's rays are the same in every pass (one position, the pixel's centre).
+            uint64_t active = 0;
+            int lane = 0;
+            for (int i = 0; i < kPacketRays; ++i) pixelX[i] = pixelY[i] = 0.0f;
+            for (uint32_t y = by; y < by + kPacketSide && y < tile.y1; ++y) {
+                for (uint32_t x = bx; x < bx + kPacketSide && x < tile.x1; ++x, ++lane) {
+                    uint32_t px, py;  // the accumulation's pixel (x, y) is image pixel (px, py): frame.target
+                    if (!frame.imagePixel(x, y, px, py)) continue;
+                    pixelX[lane] = float(px);
+                    pixelY[lane] = float(py);
+                    imageX[lane] = px;
+                    imageY[lane] = py;
+                    accumIndex[lane] = y * frame.accumWidth() + x;
+                    active |= 1ull << lane;
+                }
+            }
+            aimCameraRays(frame.camera, pixelX, pixelY, packet);  // centreCameraRay of each pixel
+            for (int i = 0; i < kPacketRays; ++i) packet.tMax[i] = INFINITY;
+            traceCameraPacket(scene, frame.camera.origin, packet, active, hits);
+            for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
+                for (uint64_t m = active; m; m &= m - 1) {
+                    const int i = __builtin_ctzll(m);
+                    uint32_t sampleRays = 0;
+                    const Vec3 c = renderSample<F>(scene, frame, imageX[i], imageY[i], pass, sampleRays, &hits[i]);
+                    accum[accumIndex[i]].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
+                    rays += sampleRays;
+                }
+            }
+        }
+    }
+    return rays;
+}
+
+// None with indirect light: its camera rays are a small share of the rays, and packets there cost more than they
+// saved (scene9_indirect_point: this translation unit's code for them inlined less of the indirect rays' work).
+template <FeatureMask F>
+struct PacketTileVariant {
+    static constexpr TileRenderFn value = (F & kFeatureIndirect) ? nullptr : &renderTilePassesInPackets<F>;
+};
+
+void traceCameraPacketEntry(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, CameraHit* out) {
+    traceCameraPacket(scene, origin, rays, active, out);
+}
+
+constexpr CameraPacketKernels makeCameraPacketKernels() {
+    constexpr auto tiles = makeVariantTable<PacketTileVariant>();
+    CameraPacketKernels k{true, {}, &traceCameraPacketEntry};
+    for (uint32_t i = 0; i < kSampleVariantCount; ++i) k.renderTile[i] = tiles[i];
+    return k;
+}
+#else
+constexpr CameraPacketKernels makeCameraPacketKernels() { return CameraPacketKernels{false, {}, nullptr}; }
+#endif
+
+}  // namespace
+}  // namespace trazo
