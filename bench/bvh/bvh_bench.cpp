@@ -14,6 +14,7 @@
 #include "core/rng.h"
 #include "device/flatten_mesh.h"
 #include "backends/backend.h"
+#include "backends/cpu/cpu_kernels.h"
 #include "scene/obj_reader.h"
 #include "support/tessellate.h"
 #if TRAZO_HAVE_EMBREE
@@ -28,7 +29,8 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // The mesh as the renderer holds it (appendMesh: BVH, wide nodes, triangles in leaf order; the mesh the one
-// object of the top level), queried through the renderer's own answerRayQuery, so the figures are the
+// object of the top level), queried through the CPU backend's ray-query loop compiled for the instruction set
+// the renderer picks on this CPU (selectCpuKernels; TRAZO_CPU_ISA forces one), so the figures are the
 // renderer's. Queries cover (0, tMax): shadow rays start a little off the surface, as the renderer's do.
 struct TriangleScene {
     std::vector<Vec3> triangles;  // original order (what Embree gets)
@@ -47,8 +49,18 @@ struct TriangleScene {
         arrays.topNodes = collapseBvh(buildBvh({wideNodeBounds(arrays.meshNodes[0])}));
         view = hostView(arrays);
     }
-    // The nearest t (+inf on a miss), or 1/0 for a shadow query.
-    float answer(const RayQuery& q, bool shadow) const { return answerRayQuery(view, q, shadow); }
+    // out[i] = the nearest t of queries[i] (+inf on a miss), or 1/0 for a shadow query.
+    void answer(const RayQuery* queries, size_t count, bool shadow, float* out) const {
+        RayAnswer answers[kChunk];
+        const CpuKernels& kernels = selectCpuKernels();
+        for (size_t done = 0; done < count; done += kChunk) {
+            const size_t n = std::min(kChunk, count - done);
+            kernels.answerRayQueries(view, queries + done, n, shadow ? RayQueryKind::Shadow : RayQueryKind::Nearest,
+                                     answers);
+            for (size_t i = 0; i < n; ++i) out[done + i] = answers[i].t;
+        }
+    }
+    static constexpr size_t kChunk = 256;
 };
 
 std::vector<Aabb> boundsOf(const std::vector<Vec3>& tris) {
@@ -71,15 +83,14 @@ double timeBuild(const std::vector<Aabb>& bounds, unsigned threads, int runs) {
     return best;
 }
 
-// Runs fn(i) for i in [0, n) on `threads` threads (interleaved chunks), returns seconds.
+// Runs fn(begin, end) over [0, n) on `threads` threads (interleaved chunks), returns seconds.
 template <class Fn>
 double parallelFor(size_t n, unsigned threads, Fn&& fn) {
     const auto start = Clock::now();
     std::vector<std::thread> pool;
     constexpr size_t kChunk = 4096;
     auto work = [&](unsigned part) {
-        for (size_t c = part * kChunk; c < n; c += (size_t)threads * kChunk)
-            for (size_t i = c; i < std::min(n, c + kChunk); ++i) fn(i);
+        for (size_t c = part * kChunk; c < n; c += (size_t)threads * kChunk) fn(c, std::min(n, c + kChunk));
     };
     for (unsigned p = 1; p < threads; ++p) pool.emplace_back(work, p);
     work(0);
@@ -109,7 +120,7 @@ RaySets makeRays(const TriangleScene& scene) {
         }
     std::vector<float> hits(sets.primary.size());
     parallelFor(hits.size(), std::max(1u, std::thread::hardware_concurrency()),
-                [&](size_t i) { hits[i] = scene.answer(sets.primary[i], false); });
+                [&](size_t begin, size_t end) { scene.answer(&sets.primary[begin], end - begin, false, &hits[begin]); });
     const Vec3 light = eye + up * (1.5f * radius) + right * (0.5f * radius);
     const float epsilon = 1e-4f * radius;  // keeps shadow rays off the surface they start on
     for (size_t i = 0; i < hits.size(); ++i) {
@@ -195,14 +206,18 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
         if (*opt.only && std::strcmp(opt.only, k.name)) continue;
         const std::vector<RayQuery> rays = subsample(*k.rays, opt.rays);
         std::vector<float> result(rays.size());
-        auto trace = [&](size_t i) { result[i] = scene.answer(rays[i], k.shadow); };
+        auto trace = [&](size_t begin, size_t end) {
+            scene.answer(&rays[begin], end - begin, k.shadow, &result[begin]);
+        };
         double t1 = 1e30, tN = 1e30;
 #if TRAZO_HAVE_EMBREE
         double te = 1e30;
         std::vector<float> theirs(rays.size());
-        auto traceEmbree = [&](size_t i) {
-            const RayQuery& q = rays[i];
-            theirs[i] = k.shadow ? (float)embree1.occluded(q.ray, 0.0f, q.tMax) : embree1.intersect(q.ray, 0.0f, q.tMax);
+        auto traceEmbree = [&](size_t begin, size_t end) {
+            for (size_t i = begin; i < end; ++i) {
+                const RayQuery& q = rays[i];
+                theirs[i] = k.shadow ? (float)embree1.occluded(q.ray, 0.0f, q.tMax) : embree1.intersect(q.ray, 0.0f, q.tMax);
+            }
         };
 #endif
         for (int r = 0; r < opt.repeat; ++r) {
@@ -269,7 +284,8 @@ int main(int argc, char** argv) {
         }
     }
     const unsigned threads = opt.threads;
-    std::printf("bvh_bench: %u threads (1T = one thread, NT = %u threads)\n", threads, threads);
+    std::printf("bvh_bench: %u threads (1T = one thread, NT = %u threads); Trazo's CPU kernels: %s\n", threads, threads,
+                cpuIsaName(selectCpuKernels().isa));
 #if !TRAZO_HAVE_EMBREE
     std::printf("Embree not found: comparison skipped\n");
 #endif
