@@ -31,7 +31,7 @@ struct NodeRay {
 #endif
 };
 
-TRAZO_HD NodeRay makeNodeRay(const Ray& ray) {
+TRAZO_HD_HOT NodeRay makeNodeRay(const Ray& ray) {
     const BoxRay b = makeBoxRay(ray);
     NodeRay r;
     r.origin = b.origin;
@@ -200,7 +200,7 @@ TRAZO_HD uint32_t pushFartherChildren(const WideBvhNode& node, unsigned mask, co
 // without a push, two are ordered by one comparison (the insertion above puts the higher lane nearer on a
 // tie), three or four are sorted as above. Prefetches the children entered (prefetchChildren), but on the
 // host not the one read next: its node test loads both its lines a few instructions later anyway.
-TRAZO_HD uint32_t nearestChildPushOthers(const WideBvhNode* nodes, const WideBvhNode& node, unsigned mask,
+TRAZO_HD_HOT uint32_t nearestChildPushOthers(const WideBvhNode* nodes, const WideBvhNode& node, unsigned mask,
                                          const float tEntry[kBvhWidth], StackEntry* stack, int& size, int capacity) {
 #if TRAZO_BVH_SSE
     mask &= usedLanes(node);
