@@ -43,9 +43,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// A batch of passes aims at this wall time: long enough that the per-batch display update is a small share,
-// short enough that an edit restarts the image quickly. The window redraws independently of it.
-constexpr double kBatchSeconds = 1.0 / 30.0;
 constexpr uint32_t kDefaultTargetPasses = 1024;
 // While the user moves the camera or edits (and for the very first image), passes that would take longer than
 // this run at 1/2, 1/4 or 1/8 of the size, so the image follows the mouse; full size resumes kPreviewHold
@@ -73,7 +70,7 @@ public:
         // Larger blocks while a pass still fits the batch budget, unless --blocks fixes them; --frames keeps one
         // stratum per pass, so its image is `--render --blocks 1 --spp N`.
         if (options.blocks) session_.setBlocks(*options.blocks, 0.0);
-        else if (!options.frames) session_.setBlocks(StrataBlocks::ones(), kBatchSeconds);
+        else if (!options.frames) session_.setBlocks(StrataBlocks::ones(), ViewerSession::kBatchSeconds);
     }
 
     // The frame loop of Dear ImGui's examples (poll, build the UI, apply its actions, render, present), with the
@@ -221,7 +218,7 @@ private:
         if (session_.samples() < double(target) && !session_.targetReached()) {
             // The target counts one-stratum passes; a pass of a grown segment stands for several.
             const double left = (double(target) - session_.samples()) / session_.blocksWeight();
-            const double budget = session_.passesForBudget(kBatchSeconds);
+            const double budget = session_.passesForBudget(ViewerSession::kBatchSeconds);
             session_.startPasses(uint32_t(std::clamp(std::ceil(left), 1.0, budget)));
             stats_.batchStarted();
         }

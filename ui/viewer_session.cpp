@@ -85,11 +85,10 @@ bool ViewerSession::busy() {
     worker_.join();
     const double seconds = batch_.get();  // rethrows the batch's exception
     passes_ += batchPasses_;
-    segmentPasses_ += batchPasses_;
+    batches_.finished(batchPasses_, seconds);
     samples_ += double(batchPasses_) * frame_.sampleWeight;
     renderSeconds_ += seconds;
-    secondsPerPass_ = seconds / std::max(batchPasses_, 1u);
-    secondsPerPixelPass_ = secondsPerPass_ / (double(width_) * height_);
+    secondsPerPixelPass_ = batches_.secondsPerPass() / (double(width_) * height_);
     rays_ = backend_->raysTraced();
     ++generation_;
     estimateAfterBatch();
@@ -111,12 +110,11 @@ void ViewerSession::startSegment(const StrataBlocks& blocks) {
     // In passes of the first segment's blocks: 1 there, so a session that never grows accumulates exactly what
     // `--render --blocks B` does.
     frame_.sampleWeight = float(fullCyclePasses(flat_.arrays, firstBlocks_)) / float(segmentCycle_);
-    segmentPasses_ = 0;
 }
 
 void ViewerSession::growBlocks() {
-    if (growthPassSeconds_ <= 0.0 || segmentPasses_ % segmentCycle_ != 0) return;
-    if (2.0 * secondsPerPass_ > growthPassSeconds_) return;
+    if (growthPassSeconds_ <= 0.0 || batches_.passes() % segmentCycle_ != 0) return;
+    if (2.0 * batches_.secondsPerPass() > growthPassSeconds_) return;
     const StrataBlocks limit = headlessBlocks(flat_.arrays), b = frame_.blocks;
     auto doubled = [](uint32_t t, uint32_t max) { return t >= max / 2 ? max : 2 * t; };
     const StrataBlocks grown{doubled(b.antialiasing, limit.antialiasing), doubled(b.areaLight, limit.areaLight),
@@ -124,7 +122,8 @@ void ViewerSession::growBlocks() {
     if (grown == b) return;
     ++segment_;
     startSegment(grown);
-    secondsPerPixelPass_ *= 2.0;  // until measured: batches sized for the larger passes
+    batches_.startSegment(segmentCycle_, 2.0);  // until measured: batches sized for the larger passes
+    secondsPerPixelPass_ *= 2.0;
 }
 
 void ViewerSession::waitIdle() {
@@ -180,6 +179,8 @@ void ViewerSession::clearAccumulation() {
     backend_->reset();
     segment_ = 0;
     startSegment(firstBlocks_);
+    batches_.restart(segmentCycle_);
+    batches_.estimateSoon();  // the first reading as soon as one is unbiased
     passes_ = 0;
     samples_ = 0.0;
     rays_ = 0;
@@ -187,19 +188,15 @@ void ViewerSession::clearAccumulation() {
     ++generation_;
     convergence_.clear();
     estimate_ = ErrorEstimate{};
-    estimateTried_ = false;
     lastEstimateSeconds_ = 0.0;
     targetReached_ = false;
 }
 
-bool ViewerSession::estimateDue() const {
-    return splitsHalves(segmentCycle_) && (!estimateTried_ || renderSeconds_ - lastEstimateSeconds_ >= kEstimateInterval);
-}
-
 void ViewerSession::estimateAfterBatch() {
-    const uint32_t evenCycles = 2 * segmentCycle_;
-    if (segmentPasses_ == 0 || segmentPasses_ % evenCycles != 0 || !estimateDue()) return;
-    estimateTried_ = true;
+    if (!batches_.estimateScheduled() && renderSeconds_ - lastEstimateSeconds_ >= kEstimateInterval)
+        batches_.estimateSoon();
+    if (!batches_.estimateDue()) return;
+    batches_.estimateDone();
     lastEstimateSeconds_ = renderSeconds_;
     std::vector<AccumPixel> accum;
     backend_->readAccumulation(accum);
@@ -220,15 +217,15 @@ void ViewerSession::startPasses(uint32_t count) {
     if (targetReached_) return;
     count = std::min(count, kMaxProgressivePasses - passes_);
     // With growth on, batches end at the segment's cycle boundaries, where growBlocks may start a new one.
-    if (growthPassSeconds_ > 0.0) count = std::min(count, segmentCycle_ - segmentPasses_ % segmentCycle_);
+    if (growthPassSeconds_ > 0.0) count = std::min(count, segmentCycle_ - batches_.passes() % segmentCycle_);
     // An estimate due: the batch ends where the halves are balanced (the pixels do not depend on batching).
-    if (estimateDue()) count = std::min(count, 2 * segmentCycle_ - segmentPasses_ % (2 * segmentCycle_));
+    count = batches_.upToEstimate(count);
     if (count == 0) return;
     batchPasses_ = count;
     std::promise<double> promise;
     batch_ = promise.get_future();
     // The worker sees only the backend and copies of what the passes need; the UI thread keeps the scene.
-    worker_ = std::thread([backend = backend_.get(), frame = frame_, first = segmentPasses_, count, cycle = segmentCycle_,
+    worker_ = std::thread([backend = backend_.get(), frame = frame_, first = batches_.passes(), count, cycle = segmentCycle_,
                            done = onBatchDone_, promise = std::move(promise)]() mutable {
         const auto t0 = std::chrono::steady_clock::now();
         try {
@@ -241,11 +238,7 @@ void ViewerSession::startPasses(uint32_t count) {
     });
 }
 
-uint32_t ViewerSession::passesForBudget(double seconds) const {
-    if (passes_ == 0 || secondsPerPixelPass_ <= 0.0) return 1;
-    const double perPass = secondsPerPixelPass_ * width_ * height_;
-    return uint32_t(std::clamp(seconds / perPass, 1.0, 65536.0));
-}
+uint32_t ViewerSession::passesForBudget(double seconds) const { return batches_.passesFor(seconds); }
 
 std::vector<RayQuery> ViewerSession::cameraRays(uint32_t width, uint32_t height, const std::vector<float>& xy) const {
     // The kernels' camera (makeFrameParams, generateCameraRay) for this size.

@@ -23,6 +23,7 @@
 #include "device/flatten.h"
 #include "dirty_flags.h"
 #include "render/error_estimate.h"
+#include "render/pass_scheduler.h"
 #include "scene/object_id.h"
 #include "scene/scene.h"
 
@@ -129,6 +130,9 @@ public:
     void applyEdits();
     // Passes for the next batch so that it takes about `seconds` (1 right after a reset: first image fast).
     uint32_t passesForBudget(double seconds) const;
+    // The window's batch budget: long enough that the per-batch display update is a small share, short enough
+    // that an edit restarts the image quickly. The window redraws independently of it.
+    static constexpr double kBatchSeconds = 1.0 / 30.0;
     // Measured cost of one pass per pixel (0 before the first batch): predicts a pass at another size.
     double secondsPerPixelPass() const { return secondsPerPixelPass_; }
     // The blocks every restart begins with (default: one stratum per pass), and growth while a pass at twice
@@ -161,7 +165,6 @@ public:
 private:
     void uploadScene();
     void clearAccumulation();
-    bool estimateDue() const;
     void estimateAfterBatch();                      // at the end of a batch: a convergence point when due
     // Camera rays of a width × height image through image positions (x, y), answered by the backend.
     std::vector<RayQuery> cameraRays(uint32_t width, uint32_t height, const std::vector<float>& xy) const;
@@ -178,8 +181,8 @@ private:
     FrameParams frame_{};
     uint32_t cyclePasses_ = 1;      // of one stratum per pass
     uint32_t segment_ = 0;          // segments since the last reset
-    uint32_t segmentPasses_ = 0;    // passes of the current segment
     uint32_t segmentCycle_ = 1;     // fullCyclePasses of its blocks
+    PassScheduler batches_;         // counts the current segment's passes
     StrataBlocks firstBlocks_{};    // setBlocks
     double growthPassSeconds_ = 0;
     DirtyFlags dirty_ = kDirtyNone;
@@ -193,13 +196,11 @@ private:
     double samples_ = 0.0;
     uint64_t rays_ = 0;
     double renderSeconds_ = 0.0;
-    double secondsPerPass_ = 0.0;  // of the last batch, for the budget
     double secondsPerPixelPass_ = 0.0;
     uint64_t generation_ = 0;
 
     std::vector<ConvergencePoint> convergence_;
     ErrorEstimate estimate_;
-    bool estimateTried_ = false;         // since the last reset
     double lastEstimateSeconds_ = 0.0;   // renderSeconds_ at the last try
     double targetError_ = 0.0;
     bool targetReached_ = false;

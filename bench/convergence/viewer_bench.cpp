@@ -19,7 +19,6 @@ namespace {
 using namespace trazo;
 using Clock = std::chrono::steady_clock;
 
-constexpr double kBatchSeconds = 1.0 / 30.0;  // the viewer's (ui/viewer_app.cpp)
 
 struct Reading {
     double seconds, relError;
@@ -31,12 +30,12 @@ struct Reading {
 std::vector<Reading> run(const Scene& scene, const std::vector<Vec3>& reference, uint32_t width, uint32_t height,
                          unsigned threads, bool grow, double seconds) {
     ViewerSession session(scene, createCpuBackend(threads), 1, width, height);
-    session.setBlocks(StrataBlocks::ones(), grow ? kBatchSeconds : 0.0);
+    session.setBlocks(StrataBlocks::ones(), grow ? ViewerSession::kBatchSeconds : 0.0);
     std::vector<Reading> out;
     const auto start = Clock::now();
     double next = 0.25;
     for (;;) {
-        session.renderPasses(session.passesForBudget(kBatchSeconds));
+        session.renderPasses(session.passesForBudget(ViewerSession::kBatchSeconds));
         const double t = std::chrono::duration<double>(Clock::now() - start).count();
         if (t < next) continue;
         const ReferenceError e = compareToReference(session.image(), reference);

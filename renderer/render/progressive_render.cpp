@@ -1,20 +1,18 @@
-// Batching of passes: the first batch is one pass; later ones aim at kBatchSeconds each. With a target
-// error the accumulation is read at growing intervals (spaced by the predicted need; without a probe at
-// multiples of 2·cycle).
+// Batches from PassScheduler, each aiming at kBatchSeconds (often enough for the progress line and the time
+// limit). With a target error the accumulation is read where the scheduler says a reading is due.
 #include "render/progressive_render.h"
 
 #include <algorithm>
 #include <chrono>
 
 #include "render/error_probe.h"
+#include "render/pass_scheduler.h"
 
 namespace trazo {
 
 namespace {
 
 constexpr double kBatchSeconds = 0.2;
-
-uint64_t roundUp(uint64_t v, uint64_t step) { return (v + step - 1) / step * step; }
 
 // The backend's accumulation: in place where it is host memory, else copied into `copy`.
 const std::vector<AccumPixel>& accumulationOf(Backend& backend, std::vector<AccumPixel>& copy) {
@@ -60,31 +58,37 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
     auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
     const uint32_t maxPasses = std::min(limits.passes, kMaxProgressivePasses);
-    bool probed = limits.errorProbe;
     const FrameParams probe = probeFrame(frame);
-    const bool targeted = limits.targetError > 0.0 && (probed || splitsHalves(limits.cyclePasses));
-    // The probe's estimate holds at any pass count; the halves' where they are balanced.
-    const uint64_t checkStep = probed ? 1u : 2ull * std::max(limits.cyclePasses, 1u);
-    uint64_t nextCheck = targeted ? checkStep : UINT64_MAX;
+    PassScheduler batches;
+    batches.restart(limits.cyclePasses, limits.errorProbe);
+    const bool targeted = limits.targetError > 0.0 && batches.canEstimate();
+    if (targeted) batches.estimateSoon();
     std::vector<AccumPixel> accum;
 
     RenderOutcome out;
-    uint32_t batch = 1;
+    bool probed = limits.errorProbe;
     auto stopped = [&] { return limits.stop && limits.stop->load(); };
+    double batchSeconds = kBatchSeconds;
     while (out.passes < maxPasses && !stopped()) {
-        const uint32_t count =
-            (uint32_t)std::min<uint64_t>({batch, maxPasses - out.passes, nextCheck - out.passes});
+        const double batchStart = elapsed();
+        const uint32_t count = batches.nextBatch(batchSeconds, maxPasses - out.passes);
         renderPassRange(backend, frame, limits.firstPass + out.passes, count, limits.cyclePasses);
         if (probed && out.probe.empty()) {  // drawn from the first batch's image, independent of its own passes
             out.probe = designProbe(accumulationOf(backend, accum), frame.camera.width, frame.camera.height, frame.seed);
-            if (out.probe.empty()) probed = false;  // nothing drawn (a 1-pixel image, by chance): the halves
-            else backend.resizeProbe(out.probe.pixels);
+            if (out.probe.empty()) {  // nothing drawn (a 1-pixel image, by chance): the halves
+                probed = false;
+                batches.restart(limits.cyclePasses, false);
+                if (targeted) batches.estimateSoon();
+            } else {
+                backend.resizeProbe(out.probe.pixels);
+            }
         }
         if (probed) renderPassRange(backend, probe, limits.firstPass + out.passes, count, limits.cyclePasses);
         out.passes += count;
+        batches.finished(count, elapsed() - batchStart);
         const double t = elapsed();
 
-        if (targeted && out.passes >= nextCheck) {
+        if (targeted && batches.estimateDue()) {
             const ErrorEstimate e = estimateRenderError(backend, out.probe, accum);
             out.estimatedRelError = e.relError;
             ++out.errorChecks;
@@ -93,26 +97,16 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
                 if (onProgress) onProgress(RenderProgress{out.passes, out.passes, t});
                 break;
             }
-            // Error ∝ passes^-1/2: aim a little past the predicted need, at most doubling per check, so
-            // the reads stay a small share of the time and the stop lands near the target.
-            double predicted = 2.0 * out.passes;
-            if (e.available && e.relError > 0.0) {
-                const double ratio = e.relError / limits.targetError;
-                predicted = std::min(predicted, 1.05 * out.passes * ratio * ratio);
-            }
-            nextCheck = roundUp(std::max<uint64_t>((uint64_t)predicted, out.passes + 1), checkStep);
+            batches.estimateWhenPredicted(e.available ? e.relError : 0.0, limits.targetError);
         }
-        const uint32_t aim = targeted ? (uint32_t)std::min<uint64_t>(nextCheck, maxPasses) : maxPasses;
+        const uint32_t aim = (uint32_t)std::min<uint64_t>(batches.nextEstimate(), maxPasses);
         if (onProgress) onProgress(RenderProgress{out.passes, aim, t});
 
-        const double perPass = t / out.passes;
-        double target = kBatchSeconds;
         if (limits.seconds > 0.0) {
             const double left = limits.seconds - t;
-            if (left < 0.5 * perPass) break;  // one more pass would overshoot the budget more than it helps
-            target = std::min(target, left);
+            if (left < 0.5 * batches.secondsPerPass()) break;  // one more pass would overshoot more than it helps
+            batchSeconds = std::min(kBatchSeconds, left);
         }
-        batch = (uint32_t)std::clamp(target / std::max(perPass, 1e-9), 1.0, 65536.0);
     }
     out.seconds = elapsed();
     out.rays = backend.raysTraced();
