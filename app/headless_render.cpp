@@ -21,6 +21,7 @@
 #include "render/multi_backend.h"
 #include "render/partial_file.h"
 #include "render/progressive_render.h"
+#include "render/render_plan.h"
 #include "render/render_start.h"
 #include "render_stats.h"
 #include "scene/scene_reader.h"
@@ -40,16 +41,19 @@ double peakRssMegabytes() {
     return (double)usage.ru_maxrss / 1024.0;
 }
 
-// The host memory a render of width × height holds besides the scene: the backend's accumulation (on the CPU
-// backend; the CUDA backend holds it on the device), its copy read back for the image, and the resolved image.
-// The writer's own buffer (at most 16 bytes a pixel) comes after the accumulation is freed.
-constexpr uint64_t kHostBytesPerPixel = 2 * sizeof(AccumPixel) + sizeof(Vec3);
-
 std::string formatBytes(uint64_t bytes) {
     char text[64];
     std::snprintf(text, sizeof text, "%llu bytes (%.1f GiB)", (unsigned long long)bytes,
                   (double)bytes / (1024.0 * 1024.0 * 1024.0));
     return text;
+}
+
+// Says why the image's memory is refused; false.
+bool refuseMemory(const RenderPlan& plan, const char* why) {
+    std::fprintf(stderr, "trazo: a %u×%u render needs %s of memory for its accumulation and image (%u bytes a "
+                         "pixel)%s; use a smaller --width/--height\n",
+                 plan.width, plan.height, formatBytes(plan.hostBytes).c_str(), (unsigned)kHostBytesPerPixel, why);
+    return false;
 }
 
 int renderScene(const CommandLine& options, const Scene& scene, RenderStats& stats,
@@ -141,6 +145,106 @@ int runHeadlessRender(const CommandLine& options) {
 
 namespace {
 
+RenderRequest requestOf(const CommandLine& options) {
+    RenderRequest r;
+    r.width = options.width;
+    r.height = options.height;
+    r.blocks = options.blocks;
+    r.spp = options.spp;
+    r.passes = options.passes;
+    r.seconds = options.seconds;
+    r.targetError = options.targetError;
+    r.partial = !options.partialPath.empty();
+    return r;
+}
+
+// --devices, or --backend and --threads; says which it opened. Null after saying why not.
+std::unique_ptr<Backend> openRenderBackend(const CommandLine& options, const SceneArrays& arrays, RenderStats& stats) {
+    std::string fallback;
+    std::unique_ptr<Backend> backend = options.devices ? openDevices(*options.devices, arrays)
+                                                       : openBackend(options.backend, options.threads, &arrays, fallback);
+    if (!backend) return nullptr;
+    stats.backend = backend->name();
+    stats.device = backend->deviceName();
+    if (!options.quiet || options.backend == BackendChoice::Auto)
+        std::fprintf(stderr, "trazo: rendering on %s\n", describeBackend(*backend, fallback).c_str());
+    return backend;
+}
+
+// What the render did and the error it reached, for the summary and --stats.
+void recordOutcome(RenderStats& stats, const CommandLine& options, const RenderOutcome& outcome,
+                   const ErrorEstimate& estimate, bool halvesBalanced) {
+    stats.spp = outcome.passes;
+    stats.renderSeconds = outcome.seconds;
+    stats.rays = outcome.rays;
+    stats.fixedGrid = options.fixedGrid;
+    stats.targetError = options.targetError;
+    stats.reachedTarget = outcome.reachedTarget;
+    stats.estimatedRelError = estimate.relError;
+    stats.probePixels = estimate.probePixels;
+    stats.estimateBalanced = estimate.available && (estimate.probePixels > 0 || halvesBalanced);
+}
+
+// The image's memory, sized up front: refused here, before any pass, rather than after the render. Reserves
+// the accumulation read back and (but for a partial) the image. False after saying why.
+bool reserveImageMemory(const RenderPlan& plan, bool partial, std::vector<AccumPixel>& accum, std::vector<Vec3>& image) {
+    const uint64_t physical = (uint64_t)sysconf(_SC_PHYS_PAGES) * (uint64_t)sysconf(_SC_PAGESIZE);
+    if (physical > 0 && plan.hostBytes > physical) return refuseMemory(plan, ", more than this machine has");
+    try {
+        accum.reserve(plan.pixels());
+        if (!partial) image.reserve(plan.pixels());
+    } catch (const std::bad_alloc&) {
+        return refuseMemory(plan, ", which cannot be allocated");
+    }
+    return true;
+}
+
+// The image, resolved into the capacity reserved for it. The backend's accumulation goes first: room for the
+// writer's buffer.
+bool writeImageFile(const std::string& path, const RenderPlan& plan, std::unique_ptr<Backend>& backend,
+                    std::vector<AccumPixel>& accum, std::vector<Vec3>& image) {
+    backend.reset();
+    for (const AccumPixel& p : accum) image.push_back(p.estimate());  // resolveImage, into the reserved image
+    std::vector<AccumPixel>().swap(accum);
+    std::string error;
+    if (writeImage(path, (int)plan.width, (int)plan.height, image, error)) return true;
+    std::fprintf(stderr, "trazo: %s\n", error.c_str());
+    return false;
+}
+
+// The partial file of the passes done, and a line when they are fewer than asked for.
+bool writePartial(const CommandLine& options, const RenderPlan& plan, const RenderStats& stats,
+                  const Fingerprint& fingerprint, PassRange done, bool signalled, std::unique_ptr<Backend>& backend,
+                  const std::vector<AccumPixel>& accum) {
+    PartialHeader header;
+    header.fingerprint = fingerprint;
+    header.fingerprint.width = plan.width;
+    header.fingerprint.height = plan.height;
+    header.fingerprint.seed = options.seed;
+    header.fingerprint.blocks = stats.blocks;
+    header.fingerprint.fullCycle = plan.fullCycle;
+    header.fingerprint.version = "trazo " TRAZO_VERSION;
+    header.passes = {done};
+    header.requested = plan.openEndedPartial ? done : plan.range;
+    header.rays = stats.rays;
+    header.seconds = stats.renderSeconds;
+    header.backend = describeBackend(*backend, "");
+    backend.reset();
+    std::string error;
+    if (!writePartialFile(options.partialPath, header, accum, error)) {
+        std::fprintf(stderr, "trazo: %s\n", error.c_str());
+        return false;
+    }
+    if (plan.openEndedPartial)
+        std::fprintf(stderr, "trazo: stopped by --time after passes %s: wrote them to %s\n", formatRange(done).c_str(),
+                     options.partialPath.c_str());
+    else if (done != header.requested || signalled)
+        std::fprintf(stderr, "trazo: %s after passes %s of %s: wrote them to %s\n",
+                     signalled ? ("stopped by signal " + std::to_string((int)stopSignal)).c_str() : "stopped by --time",
+                     formatRange(done).c_str(), formatRange(plan.range).c_str(), options.partialPath.c_str());
+    return true;
+}
+
 int renderScene(const CommandLine& options, const Scene& scene, RenderStats& stats,
                 std::chrono::steady_clock::time_point t0) {
     stats.readSeconds = secondsSince(t0);
@@ -148,167 +252,74 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     FlattenResult flat = flatten(scene);
     stats.buildSeconds = secondsSince(buildStart);
     printDiagnostics(flat.warnings);
-    stats.width = options.width.value_or((uint32_t)scene.settings.renderWidth);
-    stats.height = options.height.value_or((uint32_t)scene.settings.renderHeight);
-    const StrataBlocks blocks = options.blocks.value_or(headlessBlocks(flat.arrays));
-    stats.fullCycle = fullCyclePasses(flat.arrays, blocks);
-    stats.blocks = describeBlocks(blocks);
+    const RenderRequest request = requestOf(options);
+    const RenderPlan plan = planRender(request, scene, flat.arrays);
+    stats.width = plan.width;
+    stats.height = plan.height;
+    stats.fullCycle = plan.fullCycle;
+    stats.blocks = describeBlocks(plan.blocks);
     stats.features = describeFeatures(flat.arrays.features);
     stats.parseSeconds = secondsSince(t0);
 
-    // The image's memory, sized up front: refused here, before any pass, rather than after the render.
-    const uint64_t pixels = (uint64_t)stats.width * stats.height;
-    const uint64_t hostBytes = pixels * kHostBytesPerPixel;
-    const uint64_t physical = (uint64_t)sysconf(_SC_PHYS_PAGES) * (uint64_t)sysconf(_SC_PAGESIZE);
-    const bool partial = !options.partialPath.empty();
     Fingerprint fingerprint;
-    if (partial) {
-        std::string error;
-        if (!hashSceneFiles(scene, fingerprint, error)) {
-            std::fprintf(stderr, "trazo: %s\n", error.c_str());
-            return 1;
-        }
+    std::string error;
+    if (request.partial && !hashSceneFiles(scene, fingerprint, error)) {
+        std::fprintf(stderr, "trazo: %s\n", error.c_str());
+        return 1;
     }
     std::vector<AccumPixel> accum;
     std::vector<Vec3> image;
-    auto refuseMemory = [&](const char* why) {
-        std::fprintf(stderr, "trazo: a %u×%u render needs %s of memory for its accumulation and image (%u bytes a "
-                             "pixel)%s; use a smaller --width/--height\n",
-                     stats.width, stats.height, formatBytes(hostBytes).c_str(), (unsigned)kHostBytesPerPixel, why);
-        return 1;
-    };
-    if (physical > 0 && hostBytes > physical) return refuseMemory(", more than this machine has");
-    try {
-        accum.reserve(pixels);
-        if (!partial) image.reserve(pixels);
-    } catch (const std::bad_alloc&) {
-        return refuseMemory(", which cannot be allocated");
-    }
+    if (!reserveImageMemory(plan, request.partial, accum, image)) return 1;
 
-    std::string fallback;
-    std::unique_ptr<Backend> backend = options.devices
-                                           ? openDevices(*options.devices, flat.arrays)
-                                           : openBackend(options.backend, options.threads, &flat.arrays, fallback);
+    std::unique_ptr<Backend> backend = openRenderBackend(options, flat.arrays, stats);
     if (!backend) return 1;
-    stats.backend = backend->name();
-    stats.device = backend->deviceName();
-    if (!options.quiet || options.backend == BackendChoice::Auto)
-        std::fprintf(stderr, "trazo: rendering on %s\n", describeBackend(*backend, fallback).c_str());
+    if (!plan.note.empty()) std::fprintf(stderr, "trazo: note: %s\n", plan.note.c_str());
 
-    // What is needed of the arrays below is taken first: the backend may keep them instead of a copy.
-    const uint32_t cameraPasses = cameraPathPasses(flat.arrays, blocks);
-    // Default: one complete estimate (every stratum of every grid on the camera path once:
-    // cameraPathPasses); bounded only by the time or the target error when either is given.
-    const bool openEnded = options.seconds > 0 || options.targetError > 0;
-    const bool openEndedPartial = !options.spp && !options.passes && openEnded;
-    const uint32_t defaultEnd = options.spp ? *options.spp : (openEnded ? kMaxProgressivePasses : cameraPasses);
-    const PassRange range = options.passes ? *options.passes : PassRange{0, defaultEnd};
-    const uint32_t passes = range.count();
-    // A long render says what it will cost before it starts (a time limit bounds it already).
-    if (options.seconds <= 0) {
-        const std::string note = longRenderNote(flat.arrays, blocks, options.targetError > 0 ? cameraPasses : passes,
-                                                !options.spp && !options.passes, stats.width, stats.height);
-        if (!note.empty()) std::fprintf(stderr, "trazo: note: %s\n", note.c_str());
-    }
     t0 = std::chrono::steady_clock::now();
     backend->uploadMoved(std::move(flat.arrays));
     try {
-        backend->resize(stats.width, stats.height);
+        backend->resize(plan.width, plan.height);
     } catch (const std::bad_alloc&) {
-        return refuseMemory(", which cannot be allocated");
+        refuseMemory(plan, ", which cannot be allocated");
+        return 1;
     }
     stats.uploadSeconds = secondsSince(t0);
 
-    const FrameParams frame = makeFrameParams(scene, stats.width, stats.height, options.seed, blocks);
-    RenderLimits limits;
-    limits.seconds = options.seconds;
-    limits.targetError = options.targetError;
-    limits.cyclePasses = stats.fullCycle;
-    // The error probe, but for a partial render: its parts are merged, and the merge estimates from the halves.
-    limits.errorProbe = !partial && backend->hasProbe();
-    if (options.targetError > 0 && !limits.errorProbe && !splitsHalves(limits.cyclePasses)) {
-        std::fprintf(stderr, "trazo: --target-error: this scene's strata do not repeat within %u passes, so "
-                             "its error cannot be estimated; use --spp or --time\n", kMaxCyclePasses);
+    RenderLimits limits = plan.limits(request, backend->hasProbe());
+    if (const std::string problem = targetErrorProblem(limits); !problem.empty()) {
+        std::fprintf(stderr, "trazo: --target-error: %s\n", problem.c_str());
         return 2;
     }
-    limits.passes = passes;
-    limits.firstPass = range.first;
-    if (partial) {
+    if (request.partial) {
         limits.stop = &stopRequested;
         stopOnSignals();
     }
     ProgressBar bar(!options.quiet, options.seconds);
+    const FrameParams frame = makeFrameParams(scene, plan.width, plan.height, options.seed, plan.blocks);
     const RenderOutcome outcome =
         renderProgressive(*backend, frame, limits, [&](const RenderProgress& p) { bar.update(p); });
     bar.finish();
-    stats.spp = outcome.passes;
-    stats.renderSeconds = outcome.seconds;
-    stats.rays = outcome.rays;
-    stats.fixedGrid = options.fixedGrid;
-    stats.targetError = options.targetError;
-    stats.reachedTarget = outcome.reachedTarget;
-
-    const PassRange done{range.first, range.first + outcome.passes};
-    const bool signalled = stopRequested.load() && done.end < range.end;
     if (outcome.passes == 0) {
         std::fprintf(stderr, "trazo: stopped by signal %d before any pass; nothing was written\n", (int)stopSignal);
         return 3;
     }
-    // Into the capacity reserved above.
-    const ErrorEstimate estimate = estimateRenderError(*backend, outcome.probe, accum);
-    stats.estimatedRelError = estimate.relError;
-    stats.probePixels = estimate.probePixels;
-    stats.estimateBalanced = estimate.available && (estimate.probePixels > 0 || halvesBalanced(limits.cyclePasses, done));
+    const PassRange done{plan.range.first, plan.range.first + outcome.passes};
+    const bool signalled = stopRequested.load() && done.end < plan.range.end;
+    const ErrorEstimate estimate = estimateRenderError(*backend, outcome.probe, accum);  // into the reserved capacity
+    recordOutcome(stats, options, outcome, estimate, halvesBalanced(limits.cyclePasses, done));
 
-    // The output: the partial file, or the image resolved into the capacity reserved above. The backend's
-    // accumulation goes first: room for the writer's buffer.
-    std::string error;
     const auto writeStart = std::chrono::steady_clock::now();
-    if (partial) {
-        PartialHeader header;
-        header.fingerprint = fingerprint;
-        header.fingerprint.width = stats.width;
-        header.fingerprint.height = stats.height;
-        header.fingerprint.seed = options.seed;
-        header.fingerprint.blocks = stats.blocks;
-        header.fingerprint.fullCycle = stats.fullCycle;
-        header.fingerprint.version = "trazo " TRAZO_VERSION;
-        header.passes = {done};
-        header.requested = openEndedPartial ? done : range;
-        header.rays = outcome.rays;
-        header.seconds = outcome.seconds;
-        header.backend = describeBackend(*backend, "");
-        backend.reset();
-        if (!writePartialFile(options.partialPath, header, accum, error)) {
-            std::fprintf(stderr, "trazo: %s\n", error.c_str());
-            return 1;
-        }
-        if (openEndedPartial)
-            std::fprintf(stderr, "trazo: stopped by --time after passes %s: wrote them to %s\n",
-                         formatRange(done).c_str(), options.partialPath.c_str());
-        else if (done != header.requested || signalled)
-            std::fprintf(stderr, "trazo: %s after passes %s of %s: wrote them to %s\n",
-                         signalled ? ("stopped by signal " + std::to_string((int)stopSignal)).c_str()
-                                   : "stopped by --time",
-                         formatRange(done).c_str(), formatRange(range).c_str(), options.partialPath.c_str());
-    } else {
-        backend.reset();
-        for (const AccumPixel& p : accum) image.push_back(p.estimate());  // resolveImage, into the reserved image
-        std::vector<AccumPixel>().swap(accum);
-        if (!writeImage(options.output, (int)stats.width, (int)stats.height, image, error)) {
-            std::fprintf(stderr, "trazo: %s\n", error.c_str());
-            return 1;
-        }
-    }
+    const bool written = request.partial
+                             ? writePartial(options, plan, stats, fingerprint, done, signalled, backend, accum)
+                             : writeImageFile(options.output, plan, backend, accum, image);
+    if (!written) return 1;
     stats.writeSeconds = secondsSince(writeStart);
 
     stats.peakRssMb = peakRssMegabytes();
     if (!options.quiet) std::fputs(formatStatsSummary(stats).c_str(), stderr);
-    if (!options.statsPath.empty()) {
-        if (!writeTextFileAtomically(options.statsPath, formatStatsJson(stats), error)) {
-            std::fprintf(stderr, "trazo: %s\n", error.c_str());
-            return 1;
-        }
+    if (!options.statsPath.empty() && !writeTextFileAtomically(options.statsPath, formatStatsJson(stats), error)) {
+        std::fprintf(stderr, "trazo: %s\n", error.c_str());
+        return 1;
     }
     return signalled ? 3 : 0;  // a signal stops partial renders only
 }

@@ -1,0 +1,58 @@
+// What a headless render will do, decided before anything is allocated from what was asked and the flattened
+// scene: its size and memory, its blocks and passes, how it stops and what it says first. Pure: the CLI
+// (app/headless_render.cpp) carries it out, the tests check it. Host code.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "device/scene_arrays.h"
+#include "render/pass_range.h"
+#include "render/progressive_render.h"
+#include "render/strata_plan.h"
+#include "scene/scene.h"
+
+namespace trazo {
+
+// The part of a command line that shapes a render (app/command_line.h says what each option means).
+struct RenderRequest {
+    std::optional<uint32_t> width, height;  // default: the scene's RenderWidth × RenderHeight
+    std::optional<StrataBlocks> blocks;     // default: headlessBlocks
+    std::optional<uint32_t> spp;
+    std::optional<PassRange> passes;
+    double seconds = 0.0;
+    double targetError = 0.0;
+    bool partial = false;  // a partial file of passes, to merge later, rather than an image
+};
+
+// The host memory a render of width × height holds besides the scene: the backend's accumulation (on the CPU
+// backend; the CUDA backend holds it on the device), its copy read back for the image, and the resolved image.
+// The writer's own buffer (at most 16 bytes a pixel) comes after the accumulation is freed.
+constexpr uint64_t kHostBytesPerPixel = 2 * sizeof(AccumPixel) + sizeof(Vec3);
+
+struct RenderPlan {
+    uint32_t width = 0, height = 0;
+    StrataBlocks blocks{};
+    uint32_t fullCycle = 0;  // fullCyclePasses of the blocks: the halves' split
+    // The passes to render. Default: one complete estimate (every stratum of every grid on the camera path
+    // once: cameraPathPasses); bounded only by the time or the target error when either is given.
+    PassRange range;
+    bool defaultPasses = false;     // neither --spp nor --passes
+    bool openEndedPartial = false;  // a partial render that only the time or the target error ends
+    uint64_t hostBytes = 0;         // width · height · kHostBytesPerPixel
+    std::string note;               // said before a long render ("" for none: a time limit bounds it already)
+
+    uint64_t pixels() const { return uint64_t(width) * height; }
+    // The progressive render's limits; `errorProbe`: whether the backend has a probe (partial renders take
+    // none: their parts are merged, and the merge estimates from the halves).
+    RenderLimits limits(const RenderRequest& request, bool errorProbe) const;
+};
+
+RenderPlan planRender(const RenderRequest& request, const Scene& scene, const SceneArrays& arrays);
+
+// Why --target-error cannot work with these limits ("" when it can): no probe, and strata that do not repeat
+// within kMaxCyclePasses.
+std::string targetErrorProblem(const RenderLimits& limits);
+
+}  // namespace trazo

@@ -1,0 +1,106 @@
+// planRender: what each combination of the CLI's options makes of a render, before anything is allocated.
+#include "render/render_plan.h"
+
+#include <gtest/gtest.h>
+
+#include "device/flatten.h"
+#include "scene/scene_reader.h"
+#include "test_paths.h"
+
+namespace trazo {
+namespace {
+
+struct PlannedScene {
+    Scene scene;
+    FlattenResult flat;
+};
+
+PlannedScene load(const char* name) {
+    Diagnostics diags;
+    PlannedScene p{readSceneFile(test::sourcePath(std::string("scenes/") + name), diags), {}};
+    EXPECT_FALSE(diags.hasErrors());
+    p.flat = flatten(p.scene);
+    return p;
+}
+
+TEST(RenderPlan, DefaultsAreTheScenesSizeAndOneCameraPathCycle) {
+    const PlannedScene s = load("scene1_area.scene");
+    const RenderPlan plan = planRender(RenderRequest{}, s.scene, s.flat.arrays);
+    EXPECT_EQ(plan.width, uint32_t(s.scene.settings.renderWidth));
+    EXPECT_EQ(plan.height, uint32_t(s.scene.settings.renderHeight));
+    EXPECT_EQ(plan.blocks, headlessBlocks(s.flat.arrays));
+    EXPECT_EQ(plan.fullCycle, fullCyclePasses(s.flat.arrays, plan.blocks));
+    EXPECT_EQ(plan.range, (PassRange{0, cameraPathPasses(s.flat.arrays, plan.blocks)}));
+    EXPECT_TRUE(plan.defaultPasses);
+    EXPECT_FALSE(plan.openEndedPartial);
+    EXPECT_EQ(plan.hostBytes, uint64_t(plan.width) * plan.height * kHostBytesPerPixel);
+    EXPECT_TRUE(plan.note.empty());  // 512² of scene 1 is far from a long render
+}
+
+TEST(RenderPlan, SizeBlocksAndPassesAsAsked) {
+    const PlannedScene s = load("scene1_area.scene");
+    RenderRequest r;
+    r.width = 30;
+    r.height = 20;
+    r.blocks = StrataBlocks::ones();
+    r.spp = 7;
+    RenderPlan plan = planRender(r, s.scene, s.flat.arrays);
+    EXPECT_EQ(plan.pixels(), 600u);
+    EXPECT_EQ(plan.blocks, StrataBlocks::ones());
+    EXPECT_EQ(plan.fullCycle, 100u);  // the 10 × 10 light, one cell a pass
+    EXPECT_EQ(plan.range, (PassRange{0, 7}));
+    EXPECT_FALSE(plan.defaultPasses);
+    r.passes = PassRange{5, 9};  // --passes wins over --spp
+    plan = planRender(r, s.scene, s.flat.arrays);
+    EXPECT_EQ(plan.range, (PassRange{5, 9}));
+    const RenderLimits limits = plan.limits(r, true);
+    EXPECT_EQ(limits.passes, 4u);
+    EXPECT_EQ(limits.firstPass, 5u);
+    EXPECT_EQ(limits.cyclePasses, 100u);
+    EXPECT_TRUE(limits.errorProbe);
+}
+
+TEST(RenderPlan, ATimeOrTargetErrorLeavesThePassesOpen) {
+    const PlannedScene s = load("scene1_area.scene");
+    for (bool byTime : {true, false}) {
+        RenderRequest r;
+        (byTime ? r.seconds : r.targetError) = 0.5;
+        RenderPlan plan = planRender(r, s.scene, s.flat.arrays);
+        EXPECT_EQ(plan.range, (PassRange{0, kMaxProgressivePasses}));
+        EXPECT_FALSE(plan.openEndedPartial);
+        r.partial = true;
+        plan = planRender(r, s.scene, s.flat.arrays);
+        EXPECT_TRUE(plan.openEndedPartial);
+        EXPECT_FALSE(plan.limits(r, true).errorProbe) << "a partial's parts are merged: no probe";
+        r.spp = 4;  // a partial of asked passes is not open-ended
+        EXPECT_FALSE(planRender(r, s.scene, s.flat.arrays).openEndedPartial);
+    }
+}
+
+TEST(RenderPlan, ALongRenderIsAnnouncedUnlessATimeBoundsIt) {
+    const PlannedScene s = load("scene1_area.scene");
+    RenderRequest r;
+    r.width = r.height = 16384;
+    r.spp = 100000;
+    EXPECT_NE(planRender(r, s.scene, s.flat.arrays).note, "");
+    r.seconds = 10;
+    EXPECT_EQ(planRender(r, s.scene, s.flat.arrays).note, "");
+}
+
+TEST(RenderPlan, TargetErrorNeedsAProbeOrHalves) {
+    RenderLimits limits;
+    limits.targetError = 0.01;
+    limits.cyclePasses = kMaxCyclePasses;  // the cycle was cut: no halves
+    EXPECT_NE(targetErrorProblem(limits), "");
+    limits.errorProbe = true;
+    EXPECT_EQ(targetErrorProblem(limits), "");
+    limits.errorProbe = false;
+    limits.cyclePasses = 100;
+    EXPECT_EQ(targetErrorProblem(limits), "");
+    limits.targetError = 0;
+    limits.cyclePasses = kMaxCyclePasses;
+    EXPECT_EQ(targetErrorProblem(limits), "");
+}
+
+}  // namespace
+}  // namespace trazo
