@@ -54,8 +54,14 @@ bool readPassesOption(const std::string& text, const char* prefix, std::optional
 
 }  // namespace
 
-std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
-    CLI::App app{"Trazo: a ray tracer for the scene language of SPEC.md, on CPU and CUDA", "trazo"};
+namespace {
+
+// Options whose text is read after parsing (they need more than CLI11's checks).
+struct OptionText {
+    std::string blocks = "auto", passes, devices;
+};
+
+void declareOptions(CLI::App& app, CommandLine& out, OptionText& text) {
     app.set_version_flag("--version", "trazo " TRAZO_VERSION);
     app.footer("trazo merge PARTS... -o IMAGE merges partial renders (--partial) into one image: trazo merge --help");
     app.add_option("SCENE", out.viewerScene, "Scene to open in the interactive viewer");
@@ -71,8 +77,7 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         ->check(CLI::Range(1e-6, 1.0));
     app.add_flag("--fixed-grid", out.fixedGrid,
                  "The thesis's estimator: every pass evaluates every stratum of every grid (for comparisons)");
-    std::string blocks = "auto";
-    app.add_option("--blocks", blocks,
+    app.add_option("--blocks", text.blocks,
                    "Strata of each grid per pass: auto (measured per scene), 1, whole (= --fixed-grid), or "
                    "AA,LIGHT,INDIRECT,LIGHT_AT_INDIRECT targets, e.g. 1,100,1,5")
         ->capture_default_str();
@@ -89,20 +94,78 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
     app.add_option("--frames", out.frames, "Viewer: run N passes in the window, save --screenshot, exit 0")
         ->check(CLI::Range(1u, 1u << 24))
         ->type_name("N");
-    std::string passes, devices;
-    app.add_option("--passes", passes,
+    app.add_option("--passes", text.passes,
                    "Render passes A to B-1 (A:B): the same samples as those passes of --spp B; with --partial, "
                    "for a merge")
         ->type_name("A:B");
     app.add_option("--partial", out.partialPath,
                    "Write the raw accumulation of the passes (docs/PARTIAL_FORMAT.md) for `trazo merge`, no image")
         ->type_name("FILE");
-    app.add_option("--devices", devices, "With --backend cuda: split the passes over these CUDA devices (all, or 0,1)")
+    app.add_option("--devices", text.devices, "With --backend cuda: split the passes over these CUDA devices (all, or 0,1)")
         ->type_name("all|N,N");
     app.add_option("--screenshot", out.screenshot,
                    "Viewer: image written after --frames passes (else the screenshot key's default name)")
         ->type_name("FILE");
 
+}
+
+// --blocks, --passes and --devices from their text into `out`; false after saying why.
+bool readOptionText(const OptionText& text, CommandLine& out) {
+    if (out.fixedGrid) {
+        out.blocks = StrataBlocks::whole();
+    } else if (text.blocks != "auto") {
+        StrataBlocks parsed;
+        std::string why;
+        if (!parseStrataBlocks(text.blocks, parsed, why)) {
+            std::fprintf(stderr, "trazo: --blocks %s: %s\n", text.blocks.c_str(), why.c_str());
+            return false;
+        }
+        out.blocks = parsed;
+    }
+    if (!readPassesOption(text.passes, "trazo", out.passes)) return false;
+    if (!text.devices.empty()) {
+        CommandLine::DeviceList list;
+        std::string why;
+        if (!parseDevices(text.devices, list, why)) {
+            std::fprintf(stderr, "trazo: --devices %s: %s\n", text.devices.c_str(), why.c_str());
+            return false;
+        }
+        out.devices = list;
+    }
+    return true;
+}
+
+// Why the options given together make no command (null when they do). `outputGiven`: -o was on the line.
+const char* conflictIn(const CommandLine& out, bool outputGiven) {
+    const bool splitRender = out.passes || !out.partialPath.empty() || out.devices;
+    if (!out.viewerScene.empty() && splitRender)
+        return "trazo: --passes, --partial and --devices are for headless renders (`trazo --render SCENE`)\n";
+    if (out.passes && out.spp)
+        return "trazo: give either --spp N or --passes A:B (--spp N renders passes 0:N)\n";
+    if (!out.partialPath.empty() && outputGiven)
+        return "trazo: --partial writes the passes' accumulation, not an image: leave out -o (make the image "
+               "with `trazo merge PARTS... -o IMAGE`)\n";
+    if ((out.passes || !out.partialPath.empty()) && out.targetError > 0)
+        return "trazo: --target-error needs the whole render's error: it cannot stop a part of one (--passes, "
+               "--partial); use --spp or --time\n";
+    if (out.devices && out.backend != BackendChoice::Cuda)
+        return "trazo: --devices chooses CUDA devices: it needs --backend cuda\n";
+    if (out.renderScene.empty() && out.viewerScene.empty())
+        return "trazo: no scene given; try `trazo --render SCENE -o image.png` or `trazo --help`\n";
+    if (!out.renderScene.empty() && !out.viewerScene.empty())
+        return "trazo: give the scene either to --render or as the viewer's SCENE, not both\n";
+    if (!out.renderScene.empty() && (out.frames || !out.screenshot.empty()))
+        return "trazo: --frames and --screenshot are for the viewer (`trazo SCENE --frames N --screenshot FILE`); "
+               "with --render use --spp and -o\n";
+    return nullptr;
+}
+
+}  // namespace
+
+std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
+    CLI::App app{"Trazo: a ray tracer for the scene language of SPEC.md, on CPU and CUDA", "trazo"};
+    OptionText text;
+    declareOptions(app, out, text);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -113,62 +176,9 @@ std::optional<int> parseCommandLine(int argc, char** argv, CommandLine& out) {
         app.exit(e);
         return 2;
     }
-    if (out.fixedGrid) {
-        out.blocks = StrataBlocks::whole();
-    } else if (blocks != "auto") {
-        StrataBlocks parsed;
-        std::string why;
-        if (!parseStrataBlocks(blocks, parsed, why)) {
-            std::fprintf(stderr, "trazo: --blocks %s: %s\n", blocks.c_str(), why.c_str());
-            return 2;
-        }
-        out.blocks = parsed;
-    }
-    if (!readPassesOption(passes, "trazo", out.passes)) return 2;
-    if (!devices.empty()) {
-        CommandLine::DeviceList list;
-        std::string why;
-        if (!parseDevices(devices, list, why)) {
-            std::fprintf(stderr, "trazo: --devices %s: %s\n", devices.c_str(), why.c_str());
-            return 2;
-        }
-        out.devices = list;
-    }
-    const bool splitRender = out.passes || !out.partialPath.empty() || out.devices;
-    if (!out.viewerScene.empty() && splitRender) {
-        std::fputs("trazo: --passes, --partial and --devices are for headless renders (`trazo --render SCENE`)\n",
-                   stderr);
-        return 2;
-    }
-    if (out.passes && out.spp) {
-        std::fputs("trazo: give either --spp N or --passes A:B (--spp N renders passes 0:N)\n", stderr);
-        return 2;
-    }
-    if (!out.partialPath.empty() && app.count("--output") > 0) {
-        std::fputs("trazo: --partial writes the passes' accumulation, not an image: leave out -o (make the image "
-                   "with `trazo merge PARTS... -o IMAGE`)\n", stderr);
-        return 2;
-    }
-    if ((out.passes || !out.partialPath.empty()) && out.targetError > 0) {
-        std::fputs("trazo: --target-error needs the whole render's error: it cannot stop a part of one (--passes, "
-                   "--partial); use --spp or --time\n", stderr);
-        return 2;
-    }
-    if (out.devices && out.backend != BackendChoice::Cuda) {
-        std::fputs("trazo: --devices chooses CUDA devices: it needs --backend cuda\n", stderr);
-        return 2;
-    }
-    if (out.renderScene.empty() && out.viewerScene.empty()) {
-        std::fputs("trazo: no scene given; try `trazo --render SCENE -o image.png` or `trazo --help`\n", stderr);
-        return 2;
-    }
-    if (!out.renderScene.empty() && !out.viewerScene.empty()) {
-        std::fputs("trazo: give the scene either to --render or as the viewer's SCENE, not both\n", stderr);
-        return 2;
-    }
-    if (!out.renderScene.empty() && (out.frames || !out.screenshot.empty())) {
-        std::fputs("trazo: --frames and --screenshot are for the viewer (`trazo SCENE --frames N --screenshot FILE`); "
-                   "with --render use --spp and -o\n", stderr);
+    if (!readOptionText(text, out)) return 2;
+    if (const char* conflict = conflictIn(out, app.count("--output") > 0)) {
+        std::fputs(conflict, stderr);
         return 2;
     }
     return std::nullopt;
