@@ -112,7 +112,7 @@ inline unsigned usedLanes(const WideBvhNode& node) {
 #endif
 
 // Host: starts loading the interior children the ray entered before they are popped; random rays wait on
-// memory for most of their time (bvh_bench, 1M-triangle sphere: random rays 0.51x → 0.59x of Embree).
+// memory for most of their time (measure with build/bench/bvh/bvh_bench --only random).
 TRAZO_HD void prefetchChildren(const WideBvhNode* nodes, const WideBvhNode& node, unsigned mask) {
 #if TRAZO_BVH_SSE
     for (unsigned interior = mask & ~leafOrEmptyLanes(node); interior; interior &= interior - 1) {
@@ -221,9 +221,9 @@ TRAZO_HD_HOT uint32_t nearestChildPushOthers(const WideBvhNode* nodes, const Wid
     return pushFartherChildren(node, mask, tEntry, stack, size, capacity);
 }
 
-// For any-hit queries: pushes the children in `mask` but the first in lane order, returns the first. Sorting
-// by distance, as closest-hit does, made shadow rays slower (bvh_bench: 1M-triangle sphere, 0.49x → 0.65x
-// of Embree), since any occluder will do.
+// For any-hit queries: pushes the children in `mask` but the first in lane order, returns the first. Not
+// sorted by distance as closest-hit does: any occluder will do, and sorting costs shadow rays more than it
+// saves (build/bench/bvh/bvh_bench --only shadow).
 TRAZO_HD uint32_t pushLaterChildren(const WideBvhNode& node, unsigned mask, uint32_t* stack, int& size,
                                     int capacity) {
     uint32_t first = kBvhEmptyLane;
