@@ -1,4 +1,4 @@
-// The command line of DESIGN.md "Command line", parsed into plain options (CLI11 stays in one file).
+// The command line (README.md "Using it"), parsed into plain options (CLI11 stays in one file).
 #pragma once
 
 #include <cstdint>

@@ -26,7 +26,7 @@ if [ "${TRAZO_SKIP_APT:-0}" != 1 ]; then
 fi
 
 # The Stanford bunny of scenes 2, 5 and 10 (npm package `bunny`, not committed).
-scenes/assets/make_bunny.sh
+scripts/make_bunny.sh
 
 # nvcc is not on PATH in every shell; the toolkit's usual home is enough for CMake to find it.
 cuda_args=()

@@ -300,7 +300,7 @@ int main(int argc, char** argv) {
         for (const auto& corner : mesh->corners) tris.push_back(mesh->positions[corner.position]);
         benchScene("bunny (scenes/assets/bunny.obj)", std::move(tris), opt);
     } else {
-        std::printf("\n%s is missing or unreadable: make it with scenes/assets/make_bunny.sh\n", bunnyPath.c_str());
+        std::printf("\n%s is missing or unreadable: make it with scripts/make_bunny.sh\n", bunnyPath.c_str());
     }
     // 2·708·707 = 1,001,112 triangles, displaced so the surface is not a plain sphere.
     if (!*opt.scene || !std::strcmp(opt.scene, "sphere"))

@@ -8,114 +8,19 @@
 #include <cassert>
 #include <functional>
 
+#include "accel/bvh_binning.h"
 #include "core/thread_pool.h"
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 namespace trazo {
 namespace {
 
-// Primitive bounds and original index packed in 32 bytes; the builder partitions these in place.
-struct PrimRef {
-    Vec3 min;
-    uint32_t id;
-    Vec3 max;
-    uint32_t pad;
-};
-
-// minOf/maxOf (core/vec3.h): single SSE instructions, where fminf's NaN rules are calls; the builder never
-// sees NaN bounds it must keep.
-inline void growBox(Aabb& box, Vec3 lo, Vec3 hi) {
-    box.min = {minOf(box.min.x, lo.x), minOf(box.min.y, lo.y), minOf(box.min.z, lo.z)};
-    box.max = {maxOf(box.max.x, hi.x), maxOf(box.max.y, hi.y), maxOf(box.max.z, hi.z)};
-}
-inline void growBox(Aabb& box, const Aabb& b) { growBox(box, b.min, b.max); }
-inline Vec3 centroidOf(const PrimRef& r) { return (r.min + r.max) * 0.5f; }
+using namespace bvh_binning;
 
 struct Range {
     uint32_t begin = 0, end = 0, depth = 0;
     Aabb bounds, centroids;
     uint32_t count() const { return end - begin; }
 };
-
-// Maps a centroid coordinate to its bin: NaN and values below the range go to bin 0, the top to the last.
-struct BinMapping {
-    Vec3 origin, scale;
-    uint32_t binCount;
-    int binOf(float c, int axis) const {
-        const float f = (c - origin[axis]) * scale[axis];
-        const float last = (float)(binCount - 1);
-        return f > 0.0f ? (f < last ? (int)f : (int)last) : 0;
-    }
-};
-
-// Only the first `binCount` bins are used and initialised: a node's bins are set up half a million times.
-// (Plain floats: Vec3 and Aabb initialise their members, which would touch all kMaxBvhBins.)
-// Lane 3 of lo and hi is padding (kept 0), so that a box is one aligned four-lane load.
-struct alignas(16) BinBox {
-    float lo[4], hi[4];
-    void grow(Vec3 bMin, Vec3 bMax) {
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = minOf(lo[a], bMin[a]);
-            hi[a] = maxOf(hi[a], bMax[a]);
-        }
-    }
-    Aabb aabb() const {
-        Aabb b;
-        b.min = Vec3(lo[0], lo[1], lo[2]);
-        b.max = Vec3(hi[0], hi[1], hi[2]);
-        return b;
-    }
-};
-struct BinSet {
-    BinBox bounds[3][kMaxBvhBins];
-    uint32_t counts[3][kMaxBvhBins];
-    explicit BinSet(uint32_t binCount) {
-        for (int a = 0; a < 3; ++a)
-            for (uint32_t b = 0; b < binCount; ++b) {
-                bounds[a][b] = BinBox{{INFINITY, INFINITY, INFINITY, 0.0f}, {-INFINITY, -INFINITY, -INFINITY, 0.0f}};
-                counts[a][b] = 0;
-            }
-    }
-};
-
-#if defined(__SSE2__)
-// The same arithmetic as BinMapping::binOf in four lanes (maxps returns 0 for NaN as binOf does), with
-// bin boxes grown by one minps/maxps: binning dominates the build.
-void binPrimitives(const PrimRef* refs, uint32_t count, const BinMapping& m, BinSet& bins) {
-    const __m128 origin = _mm_setr_ps(m.origin.x, m.origin.y, m.origin.z, 0.0f);
-    const __m128 scale = _mm_setr_ps(m.scale.x, m.scale.y, m.scale.z, 0.0f);
-    const __m128 half = _mm_set1_ps(0.5f), zero = _mm_setzero_ps(), last = _mm_set1_ps((float)(m.binCount - 1));
-    const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));  // the id lane would be a denormal
-    for (uint32_t i = 0; i < count; ++i) {
-        const __m128 bMin = _mm_and_ps(_mm_loadu_ps(&refs[i].min.x), xyz);
-        const __m128 bMax = _mm_and_ps(_mm_loadu_ps(&refs[i].max.x), xyz);
-        const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_mul_ps(_mm_add_ps(bMin, bMax), half), origin), scale);
-        alignas(16) int32_t bin[4];
-        _mm_store_si128((__m128i*)bin, _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(f, zero), last)));
-        for (int a = 0; a < 3; ++a) {
-            BinBox& box = bins.bounds[a][bin[a]];
-            _mm_store_ps(box.lo, _mm_min_ps(_mm_load_ps(box.lo), bMin));
-            _mm_store_ps(box.hi, _mm_max_ps(_mm_load_ps(box.hi), bMax));
-            ++bins.counts[a][bin[a]];
-        }
-    }
-}
-#else
-void binPrimitives(const PrimRef* refs, uint32_t count, const BinMapping& m, BinSet& bins) {
-    for (uint32_t i = 0; i < count; ++i) {
-        const PrimRef& r = refs[i];
-        const Vec3 c = centroidOf(r);
-        for (int a = 0; a < 3; ++a) {
-            const int b = m.binOf(c[a], a);
-            bins.bounds[a][b].grow(r.min, r.max);
-            ++bins.counts[a][b];
-        }
-    }
-}
-#endif
 
 enum class SplitKind { Leaf, Sah, Median };
 struct Split {
@@ -261,84 +166,23 @@ private:
         const uint64_t childLimit =
             remaining - 1 >= 32 ? UINT64_MAX : (uint64_t)options_.maxLeafSize << (remaining - 1);
 
-        Split best;
-        float bestCost = INFINITY;
-        uint32_t bestLeft = 0;
+        SahSplit sah;
         const BinMapping m = mappingFor(r);
         if (m.scale.x > 0.0f || m.scale.y > 0.0f || m.scale.z > 0.0f) {
             BinSet bins(m.binCount);
             binRange(r, m, parallel, bins);
-            const uint32_t k = m.binCount;
-            for (int a = 0; a < 3; ++a) {
-                if (m.scale[a] == 0.0f) continue;
-                float rightArea[kMaxBvhBins];
-                uint32_t rightCount[kMaxBvhBins];
-#if defined(__SSE2__)
-                // growBox and Aabb::surfaceArea in four lanes, the same operations in the same order.
-                auto area = [](__m128 lo, __m128 hi) {
-                    if (_mm_movemask_ps(_mm_cmpgt_ps(lo, hi)) & 7) return 0.0f;  // empty
-                    const __m128 e = _mm_sub_ps(hi, lo);
-                    alignas(16) float p[4];  // (ex·ey, ey·ez, ez·ex, ·)
-                    _mm_store_ps(p, _mm_mul_ps(e, _mm_shuffle_ps(e, e, _MM_SHUFFLE(3, 0, 2, 1))));
-                    return 2.0f * (p[0] + p[1] + p[2]);
-                };
-                __m128 lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY);
-                uint32_t c = 0;
-                for (uint32_t b = k - 1; b > 0; --b) {
-                    lo = _mm_min_ps(lo, _mm_load_ps(bins.bounds[a][b].lo));
-                    hi = _mm_max_ps(hi, _mm_load_ps(bins.bounds[a][b].hi));
-                    c += bins.counts[a][b];
-                    rightArea[b] = area(lo, hi);
-                    rightCount[b] = c;
-                }
-                lo = _mm_set1_ps(INFINITY), hi = _mm_set1_ps(-INFINITY);
-                c = 0;
-                for (uint32_t b = 1; b < k; ++b) {
-                    lo = _mm_min_ps(lo, _mm_load_ps(bins.bounds[a][b - 1].lo));
-                    hi = _mm_max_ps(hi, _mm_load_ps(bins.bounds[a][b - 1].hi));
-                    c += bins.counts[a][b - 1];
-                    if (c == 0 || rightCount[b] == 0) continue;
-                    const float cost = area(lo, hi) * (float)c + rightArea[b] * (float)rightCount[b];
-                    if (cost < bestCost) {
-                        bestCost = cost;
-                        best = Split{SplitKind::Sah, a, (int)b};
-                        bestLeft = c;
-                    }
-                }
-#else
-                Aabb box;
-                uint32_t c = 0;
-                for (uint32_t b = k - 1; b > 0; --b) {
-                    growBox(box, bins.bounds[a][b].aabb());
-                    c += bins.counts[a][b];
-                    rightArea[b] = box.surfaceArea();
-                    rightCount[b] = c;
-                }
-                box = Aabb{};
-                c = 0;
-                for (uint32_t b = 1; b < k; ++b) {
-                    growBox(box, bins.bounds[a][b - 1].aabb());
-                    c += bins.counts[a][b - 1];
-                    if (c == 0 || rightCount[b] == 0) continue;
-                    const float cost = box.surfaceArea() * (float)c + rightArea[b] * (float)rightCount[b];
-                    if (cost < bestCost) {
-                        bestCost = cost;
-                        best = Split{SplitKind::Sah, a, (int)b};
-                        bestLeft = c;
-                    }
-                }
-#endif
-            }
+            for (int a = 0; a < 3; ++a)
+                if (m.scale[a] != 0.0f) sweepAxis(bins, m.binCount, a, sah);
         }
-        const bool haveSah = best.kind == SplitKind::Sah;
         if (n <= options_.maxLeafSize) {
             const float area = r.bounds.surfaceArea();
-            const float splitCost = haveSah && area > 0.0f
-                                        ? options_.traversalCost + options_.intersectionCost * bestCost / area
+            const float splitCost = sah.found && area > 0.0f
+                                        ? options_.traversalCost + options_.intersectionCost * sah.cost / area
                                         : INFINITY;
-            if (!haveSah || options_.intersectionCost * (float)n <= splitCost) return {};
+            if (!sah.found || options_.intersectionCost * (float)n <= splitCost) return {};
         }
-        if (haveSah && bestLeft <= childLimit && n - bestLeft <= childLimit) return best;
+        if (sah.found && sah.leftCount <= childLimit && n - sah.leftCount <= childLimit)
+            return Split{SplitKind::Sah, sah.axis, sah.bin};
         return Split{SplitKind::Median, 0, 0};
     }
 
@@ -349,86 +193,11 @@ private:
     }
 
     void partitionSah(const Range& r, const Split& s, Range& left, Range& right) {
-        const BinMapping m = mappingFor(r);
-        PrimRef* p = refs_.data();
-        uint32_t i = r.begin, j = r.end;
-#if defined(__SSE2__)
-        // binOf's arithmetic in four lanes, as binPrimitives does it, and the boxes grown by minps/maxps
-        // (which are minOf/maxOf: "a < b ? a : b"), so the result is the scalar loop's bit for bit.
-        const __m128 origin = _mm_setr_ps(m.origin.x, m.origin.y, m.origin.z, 0.0f);
-        const __m128 scale = _mm_setr_ps(m.scale.x, m.scale.y, m.scale.z, 0.0f);
-        const __m128 half = _mm_set1_ps(0.5f), zero = _mm_setzero_ps(), last = _mm_set1_ps((float)(m.binCount - 1));
-        const __m128 xyz = _mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0));
-        const __m128 inf = _mm_set1_ps(INFINITY), negInf = _mm_set1_ps(-INFINITY);
-        __m128 lbMin = inf, lbMax = negInf, lcMin = inf, lcMax = negInf;
-        __m128 rbMin = inf, rbMax = negInf, rcMin = inf, rcMax = negInf;
-        const int axis = s.axis, splitBin = s.bin;
-        struct Lanes {
-            __m128 lo, hi, c;
-            bool left;
-        };
-        auto look = [&](const PrimRef& ref) {
-            Lanes l;
-            l.lo = _mm_and_ps(_mm_loadu_ps(&ref.min.x), xyz);
-            l.hi = _mm_and_ps(_mm_loadu_ps(&ref.max.x), xyz);
-            l.c = _mm_mul_ps(_mm_add_ps(l.lo, l.hi), half);
-            alignas(16) int32_t bin[4];
-            _mm_store_si128((__m128i*)bin,
-                            _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(_mm_mul_ps(_mm_sub_ps(l.c, origin), scale), zero), last)));
-            l.left = bin[axis] < splitBin;
-            return l;
-        };
-        auto addLeft = [&](const Lanes& l) {
-            lbMin = _mm_min_ps(lbMin, l.lo), lbMax = _mm_max_ps(lbMax, l.hi);
-            lcMin = _mm_min_ps(lcMin, l.c), lcMax = _mm_max_ps(lcMax, l.c);
-        };
-        auto addRight = [&](const Lanes& l) {
-            rbMin = _mm_min_ps(rbMin, l.lo), rbMax = _mm_max_ps(rbMax, l.hi);
-            rcMin = _mm_min_ps(rcMin, l.c), rcMax = _mm_max_ps(rcMax, l.c);
-        };
-        for (;;) {
-            Lanes a{}, b{};
-            while (i < j && (a = look(p[i])).left) addLeft(a), ++i;
-            while (i < j && !(b = look(p[j - 1])).left) addRight(b), --j;
-            if (i >= j) break;
-            std::swap(p[i], p[j - 1]);
-            addLeft(b), ++i;   // b (now at i) goes left, a (now at j - 1) goes right
-            addRight(a), --j;
-        }
-        auto toVec3 = [](__m128 v) {
-            alignas(16) float f[4];
-            _mm_store_ps(f, v);
-            return Vec3(f[0], f[1], f[2]);
-        };
-        finishRange(left, r.begin, i, r.depth + 1);
-        finishRange(right, i, r.end, r.depth + 1);
-        left.bounds = Aabb{toVec3(lbMin), toVec3(lbMax)}, left.centroids = Aabb{toVec3(lcMin), toVec3(lcMax)};
-        right.bounds = Aabb{toVec3(rbMin), toVec3(rbMax)}, right.centroids = Aabb{toVec3(rcMin), toVec3(rcMax)};
-#else
-        Aabb lb, lc, rb, rc;
-        auto goesLeft = [&](const PrimRef& ref) { return m.binOf(centroidOf(ref)[s.axis], s.axis) < s.bin; };
-        auto addLeft = [&](const PrimRef& ref) {
-            growBox(lb, ref.min, ref.max);
-            const Vec3 c = centroidOf(ref);
-            growBox(lc, c, c);
-        };
-        auto addRight = [&](const PrimRef& ref) {
-            growBox(rb, ref.min, ref.max);
-            const Vec3 c = centroidOf(ref);
-            growBox(rc, c, c);
-        };
-        for (;;) {
-            while (i < j && goesLeft(p[i])) addLeft(p[i++]);
-            while (i < j && !goesLeft(p[j - 1])) addRight(p[--j]);
-            if (i >= j) break;
-            std::swap(p[i], p[j - 1]);
-            addLeft(p[i++]);
-            addRight(p[--j]);
-        }
-        finishRange(left, r.begin, i, r.depth + 1);
-        finishRange(right, i, r.end, r.depth + 1);
-        left.bounds = lb, left.centroids = lc, right.bounds = rb, right.centroids = rc;
-#endif
+        const Partition p = partitionPrimitives(refs_.data(), r.begin, r.end, mappingFor(r), s.axis, s.bin);
+        finishRange(left, r.begin, p.mid, r.depth + 1);
+        finishRange(right, p.mid, r.end, r.depth + 1);
+        left.bounds = p.leftBounds, left.centroids = p.leftCentroids;
+        right.bounds = p.rightBounds, right.centroids = p.rightCentroids;
     }
 
     // Object median along the widest centroid axis; ties broken by original index so it is deterministic.

@@ -25,9 +25,8 @@ struct BvhBuildOptions {
 constexpr uint32_t kMaxBvhBins = 64;
 
 // For triangles, which intersectTriangleLeaf tests a whole leaf (≤ 4) at a time for about the cost of one:
-// a triangle is priced at 0.3 node visits, so the SAH fills leaves. On the 1M-triangle sphere of bvh_bench
-// this halved the nodes (34 → 19 MB) and raised random rays from 0.60x to 0.65x of Embree (0.15 gives the
-// same tree).
+// a triangle is priced at a fraction of a node visit, so the SAH fills leaves: fewer nodes, and rays visit
+// fewer of them (build/bench/bvh/bvh_bench prints both).
 inline BvhBuildOptions triangleBvhOptions() {
     BvhBuildOptions options;
     options.intersectionCost = 0.3f;

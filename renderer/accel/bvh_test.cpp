@@ -474,7 +474,7 @@ TEST(BvhTraverse, AxisAlignedRaysOnSlabPlanesMatchBruteForce) {
 // distances. Boxes and rays are drawn rich in the awkward cases: flat and empty boxes, coordinates on shared
 // planes, zero direction components (infinite inverses, NaN products) and signed zeros.
 TEST(BvhTraverse, SseChildTestMatchesScalarBitForBit) {
-#if TRAZO_BVH_SSE
+#if TRAZO_HOST_SSE
     CounterUniform u(50);
     auto coordinate = [&]() {
         const float pick = u(0.0f, 4.0f);
@@ -515,7 +515,7 @@ TEST(BvhTraverse, SseChildTestMatchesScalarBitForBit) {
 // The host's shortcut for one or two children entered must push and return exactly what the sorting
 // insertion does (which child is nearest on a tie decides which of two equally near triangles is kept).
 TEST(BvhTraverse, NearestChildShortcutMatchesTheSort) {
-#if TRAZO_BVH_SSE
+#if TRAZO_HOST_SSE
     CounterUniform u(51);
     const std::vector<WideBvhNode> nodes(104);  // what the interior references 100–103 point to (prefetched)
     int twoChildren = 0, ties = 0;

@@ -5,13 +5,7 @@
 
 #include "accel/ray_box.h"
 #include "accel/wide_bvh_node.h"
-
-#if !TRAZO_DEVICE_PATHS && defined(__SSE2__)
-#include <emmintrin.h>
-#define TRAZO_BVH_SSE 1
-#else
-#define TRAZO_BVH_SSE 0
-#endif
+#include "core/host_simd.h"
 
 namespace trazo {
 
@@ -23,7 +17,7 @@ struct NodeRay {
     Vec3 origin;
     Vec3 invDirection;
     int nearSide[3];  // per axis: 0 = the min plane is entered first, 1 = the max plane; the exit is 1 − it
-#if TRAZO_BVH_SSE
+#if TRAZO_HOST_SSE
     __m128 originLanes[3], invLanes[3];  // broadcast once per ray rather than once per node
     // Per axis, where the entry and the exit planes' four floats start in WideBvhNode::bounds (floats from
     // bounds[0][0]): no index arithmetic per node.
@@ -38,7 +32,7 @@ TRAZO_HD_HOT NodeRay makeNodeRay(const Ray& ray) {
     r.invDirection = b.invDirection;
     // The same choice as narrowSlab: the max plane first exactly when invDirection < 0 (so −0 → −inf picks it).
     for (int axis = 0; axis < 3; ++axis) r.nearSide[axis] = b.invDirection[axis] < 0.0f ? 1 : 0;
-#if TRAZO_BVH_SSE
+#if TRAZO_HOST_SSE
     for (int axis = 0; axis < 3; ++axis) {
         r.originLanes[axis] = _mm_set1_ps(b.origin[axis]);
         r.invLanes[axis] = _mm_set1_ps(b.invDirection[axis]);
@@ -70,7 +64,7 @@ TRAZO_HD unsigned intersectChildrenScalar(const NodeRay& r, const WideBvhNode& n
     return mask;
 }
 
-#if TRAZO_BVH_SSE
+#if TRAZO_HOST_SSE
 // _mm_max_ps(a, b) is a > b ? a : b and _mm_min_ps(a, b) is a < b ? a : b, NaN handling included: exactly
 // the scalar selects above.
 inline unsigned intersectChildrenSse(const NodeRay& r, const WideBvhNode& node, float tMin, float tMax,
@@ -91,14 +85,14 @@ inline unsigned intersectChildrenSse(const NodeRay& r, const WideBvhNode& node, 
 
 TRAZO_HD unsigned intersectChildren(const NodeRay& r, const WideBvhNode& node, float tMin, float tMax,
                                     float tEntry[kBvhWidth]) {
-#if TRAZO_BVH_SSE
+#if TRAZO_HOST_SSE
     return intersectChildrenSse(r, node, tMin, tMax, tEntry);
 #else
     return intersectChildrenScalar(r, node, tMin, tMax, tEntry);
 #endif
 }
 
-#if TRAZO_BVH_SSE
+#if TRAZO_HOST_SSE
 // Host: the lanes whose reference is a leaf or empty (bit 31 set in both), and the lanes in use, read from
 // the four references at once.
 inline unsigned leafOrEmptyLanes(const WideBvhNode& node) {
@@ -112,9 +106,9 @@ inline unsigned usedLanes(const WideBvhNode& node) {
 #endif
 
 // Host: starts loading the interior children the ray entered before they are popped; random rays wait on
-// memory for most of their time (bvh_bench, 1M-triangle sphere: random rays 0.51x → 0.59x of Embree).
+// memory for most of their time (measure with build/bench/bvh/bvh_bench --only random).
 TRAZO_HD void prefetchChildren(const WideBvhNode* nodes, const WideBvhNode& node, unsigned mask) {
-#if TRAZO_BVH_SSE
+#if TRAZO_HOST_SSE
     for (unsigned interior = mask & ~leafOrEmptyLanes(node); interior; interior &= interior - 1) {
         const char* child = reinterpret_cast<const char*>(nodes + node.child[__builtin_ctz(interior)]);
         __builtin_prefetch(child);
@@ -202,7 +196,7 @@ TRAZO_HD uint32_t pushFartherChildren(const WideBvhNode& node, unsigned mask, co
 // host not the one read next: its node test loads both its lines a few instructions later anyway.
 TRAZO_HD_HOT uint32_t nearestChildPushOthers(const WideBvhNode* nodes, const WideBvhNode& node, unsigned mask,
                                          const float tEntry[kBvhWidth], StackEntry* stack, int& size, int capacity) {
-#if TRAZO_BVH_SSE
+#if TRAZO_HOST_SSE
     mask &= usedLanes(node);
     if (!mask) return kBvhEmptyLane;
     const int a = __builtin_ctz(mask);
@@ -221,9 +215,9 @@ TRAZO_HD_HOT uint32_t nearestChildPushOthers(const WideBvhNode* nodes, const Wid
     return pushFartherChildren(node, mask, tEntry, stack, size, capacity);
 }
 
-// For any-hit queries: pushes the children in `mask` but the first in lane order, returns the first. Sorting
-// by distance, as closest-hit does, made shadow rays slower (bvh_bench: 1M-triangle sphere, 0.49x → 0.65x
-// of Embree), since any occluder will do.
+// For any-hit queries: pushes the children in `mask` but the first in lane order, returns the first. Not
+// sorted by distance as closest-hit does: any occluder will do, and sorting costs shadow rays more than it
+// saves (build/bench/bvh/bvh_bench --only shadow).
 TRAZO_HD uint32_t pushLaterChildren(const WideBvhNode& node, unsigned mask, uint32_t* stack, int& size,
                                     int capacity) {
     uint32_t first = kBvhEmptyLane;

@@ -1,4 +1,4 @@
-// Affine3: a 3x4 affine transform (linear part + translation), for boxes and, later, meshes and CSG.
+// Affine3: a 3x4 affine transform (linear part + translation), for boxes, meshes and CSG solids.
 #pragma once
 
 #include "core/vec3.h"

@@ -6,20 +6,45 @@
 
 namespace trazo {
 
+// X(bit, name): every feature, its mask bit (in list order) and the word messages and --stats print for it.
+// The one list: the bits, their names and describeFeatures all come from it, so none can be left out.
+#define TRAZO_FEATURES(X)                                                                                   \
+    X(kFeaturePointLights, "point-lights")                                                                  \
+    X(kFeatureAreaLights, "area-lights")                                                                    \
+    X(kFeatureReflection, "reflection") /* a material reflects (mirror or glossy), ReflectionQuality ≥ 1 */ \
+    X(kFeatureGlossy, "glossy")         /* a reflecting material has ReflectionAngle > 0 */                 \
+    X(kFeatureRefraction, "refraction") /* a material has Opacity < 1 */                                    \
+    X(kFeatureEmissive, "emissive")                                                                         \
+    X(kFeatureIndirect, "indirect")     /* IndirectQuality ≥ 1 and ColorBleeding > 0 */                     \
+    X(kFeatureTextures, "textures")                                                                         \
+    X(kFeatureMeshes, "meshes")                                                                             \
+    X(kFeatureCsg, "csg")
+
+// Bit positions, in list order.
+enum FeatureBit : uint32_t {
+#define TRAZO_X(bit, name) bit##Bit,
+    TRAZO_FEATURES(TRAZO_X)
+#undef TRAZO_X
+    kFeatureCount
+};
+
 enum Feature : uint32_t {
-    kFeaturePointLights = 1u << 0,
-    kFeatureAreaLights = 1u << 1,
-    kFeatureReflection = 1u << 2,  // some material reflects (mirror or glossy) and ReflectionQuality ≥ 1
-    kFeatureGlossy = 1u << 3,      // some reflecting material has ReflectionAngle > 0
-    kFeatureRefraction = 1u << 4,  // some material has Opacity < 1
-    kFeatureEmissive = 1u << 5,
-    kFeatureIndirect = 1u << 6,    // IndirectQuality ≥ 1 and ColorBleeding > 0
-    kFeatureTextures = 1u << 7,
-    kFeatureMeshes = 1u << 8,
-    kFeatureCsg = 1u << 9,
+#define TRAZO_X(bit, name) bit = 1u << bit##Bit,
+    TRAZO_FEATURES(TRAZO_X)
+#undef TRAZO_X
 };
 
 using FeatureMask = uint32_t;
+
+struct FeatureName {
+    Feature bit;
+    const char* name;
+};
+inline constexpr FeatureName kFeatureNames[kFeatureCount] = {
+#define TRAZO_X(bit, name) {bit, name},
+    TRAZO_FEATURES(TRAZO_X)
+#undef TRAZO_X
+};
 
 // "area-lights reflection …" for messages and --stats.
 std::string describeFeatures(FeatureMask mask);

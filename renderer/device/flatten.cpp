@@ -181,16 +181,4 @@ FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
     return result;
 }
 
-std::string describeFeatures(FeatureMask mask) {
-    static const char* const kNames[] = {"point-lights", "area-lights", "reflection", "glossy",  "refraction",
-                                         "emissive",     "indirect",    "textures",   "meshes",  "csg"};
-    std::string s;
-    for (int i = 0; i < 10; ++i) {
-        if (!(mask & (1u << i))) continue;
-        if (!s.empty()) s += ' ';
-        s += kNames[i];
-    }
-    return s.empty() ? "none" : s;
-}
-
 }  // namespace trazo

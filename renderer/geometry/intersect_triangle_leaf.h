@@ -5,14 +5,8 @@
 
 #include <cstdint>
 
+#include "core/host_simd.h"
 #include "geometry/intersect_triangle.h"
-
-#if !TRAZO_DEVICE_PATHS && defined(__SSE2__)
-#include <emmintrin.h>
-#define TRAZO_TRIANGLE_SSE 1
-#else
-#define TRAZO_TRIANGLE_SSE 0
-#endif
 
 namespace trazo {
 
@@ -38,7 +32,7 @@ TRAZO_HD bool intersectTrianglesLoop(const TriangleRay& r, const MeshTriangle* t
     return any;
 }
 
-#if TRAZO_TRIANGLE_SSE
+#if TRAZO_HOST_SSE
 namespace triangle_detail {
 
 // Four triangles' vertices as structure of arrays: v[k][axis] holds vertex k's coordinate on that axis.
@@ -119,7 +113,7 @@ inline int intersect4(const TriangleRay& r, const MeshTriangle* triangles, uint3
 // Nearest hit among the leaf's triangles[0, count), count ≤ kMaxLeafTriangles; see intersectTrianglesLoop.
 TRAZO_HD bool intersectTriangleLeaf(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin,
                                     float tMax, TriangleHit& hit, uint32_t& which) {
-#if TRAZO_TRIANGLE_SSE
+#if TRAZO_HOST_SSE
     using namespace triangle_detail;
     __m128 t, invDet, v, w;
     int mask = intersect4(r, triangles, count, tMin, tMax, t, invDet, v, w);
@@ -144,7 +138,7 @@ TRAZO_HD bool intersectTriangleLeaf(const TriangleRay& r, const MeshTriangle* tr
 // Whether any of the leaf's triangles[0, count) is hit within (tMin, tMax).
 TRAZO_HD bool triangleLeafBlocks(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin,
                                  float tMax) {
-#if TRAZO_TRIANGLE_SSE
+#if TRAZO_HOST_SSE
     using namespace triangle_detail;
     __m128 t, invDet, v, w;
     const int mask = intersect4(r, triangles, count, tMin, tMax, t, invDet, v, w);

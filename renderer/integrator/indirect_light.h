@@ -10,8 +10,6 @@
 
 namespace trazo {
 
-constexpr uint32_t kBranchIndirect = 4;  // sample-tree branch of the points Q (their own light strata)
-
 template <FeatureMask F>
 TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
                             const StrataKey& strata, const StrataBlocks& blocks, SampleStream& rng,

@@ -75,7 +75,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
     const RenderSettings& settings = scene.settings;
     PendingSlot stack[kMaxPendingRays];
     int pending = 0;
-    stack[pending++].ray = PendingRay{cameraRay, Vec3(1.0f), 0u, 0u, 1u};
+    stack[pending++].ray = PendingRay{cameraRay, Vec3(1.0f), 0u, 0u, kSampleTreeRoot};
     auto push = [&](const PendingRay& r) {
         if (pending < kMaxPendingRays) stack[pending++].ray = r;
     };
@@ -121,7 +121,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
             Vec3 out;
             if (!refractDirection(d, nInside, m.refractionIndex, out)) out = reflectDirection(d, nInside);
             push(PendingRay{Ray{offsetRayOrigin(p, pError, surface.ng, out), out}, r.weight, r.reflectionDepth,
-                            r.segments + 1u, hashCombine(r.node, 3)});
+                            r.segments + 1u, hashCombine(r.node, kBranchRefractedOut)});
             continue;
         }
 
@@ -136,7 +136,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
             const Vec3 dir = sampleReflection(sp, d, m, settings.reflectionQuality, strata, rng);
             if (dot(dir, sp.ng) > 0.0f) {  // directions below the geometric surface contribute 0
                 push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, r.weight * m.specular * (a * m.opacity),
-                                r.reflectionDepth + 1u, 0u, hashCombine(r.node, 1)});
+                                r.reflectionDepth + 1u, 0u, hashCombine(r.node, kBranchReflected)});
             }
         }
         if (kRefraction && m.opacity < 1.0f && r.segments < kMaxTransmissionSegments) {
@@ -144,7 +144,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
             Vec3 dir;
             if (!refractDirection(d, sp.n, 1.0f / m.refractionIndex, dir)) dir = reflectDirection(d, sp.n);
             push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, r.weight * (1.0f - m.opacity),
-                            r.reflectionDepth, r.segments + 1u, hashCombine(r.node, 2)});
+                            r.reflectionDepth, r.segments + 1u, hashCombine(r.node, kBranchRefractedIn)});
         }
         color += r.weight * m.emissive;
         const float directWeight = (1.0f - a) * m.opacity;  // 0 for pure mirrors and clear glass: no shadow rays
@@ -164,7 +164,7 @@ TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uin
                            uint32_t pass, uint32_t& rays, const CameraHit* given = nullptr) {
     const uint32_t pixelIndex = py * frame.camera.width + px;
     SampleStream rng(frame.seed, pixelIndex, pass);
-    const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, 1u};
+    const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, kSampleTreeRoot};
 #if TRAZO_SHADOW_PACKETS
     if (given) {
         Vec3 color(0.0f);  // the sum below, of one position

@@ -19,6 +19,14 @@ constexpr uint32_t kGridIndirect = 2;
 constexpr uint32_t kGridAreaLightBase = 16;  // + light index
 constexpr uint32_t kGridAntialiasing = 0x41414141u;
 
+// The pixel's sample tree: the camera ray is its root, and each ray a shading point sends on (or the points Q
+// its indirect rays find) is the child node hashCombine(node, branch), so every ray's grids draw their own strata.
+constexpr uint32_t kSampleTreeRoot = 1;
+constexpr uint32_t kBranchReflected = 1;
+constexpr uint32_t kBranchRefractedIn = 2;   // into a transparent solid
+constexpr uint32_t kBranchRefractedOut = 3;  // out of it, or reflected inside it
+constexpr uint32_t kBranchIndirect = 4;      // the points Q of the indirect rays (their own light strata)
+
 constexpr uint32_t kWholeGrid = 0xffffffffu;
 
 // The block size a pass asks of each kind of grid. A value is a target: a grid of N strata uses the

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "geometry/surface_frame.h"
-#include "integrator/direct_light.h"
 #include "integrator/scene_intersect.h"
+#include "integrator/shading_point.h"
 
 namespace trazo {
 

@@ -1,5 +1,5 @@
-// Unit tests of the error estimate, the half split and the target-error stop, on synthetic samples (a fake
-// backend whose "render" draws known random values), so the statistics are exact and quick.
+// Unit tests of the error estimate and the half split, on synthetic samples (a backend whose "render" draws
+// known random values: fake_backend.h), so the statistics are exact and quick.
 #include "render/error_estimate.h"
 
 #include <gtest/gtest.h>
@@ -9,10 +9,13 @@
 #include <random>
 
 #include "core/rng.h"
+#include "render/fake_backend.h"
 #include "render/progressive_render.h"
 
 namespace trazo {
 namespace {
+
+using test::FakeBackend;
 
 TEST(ErrorEstimate, FormulaOnTwoPixels) {
     // Pixel 0: first half 2 samples summing to (2,4,6), second half 2 samples summing to (4,4,4).
@@ -90,60 +93,6 @@ TEST(HalfSplit, BalancedOverTwoCyclesForEveryGrid) {
     }
 }
 
-// A backend without a scene: pass v of pixel i adds f(i, stratum) + noise, with the strata of a grid of
-// `strata` cells cycled from a per-pixel offset exactly as the kernels do. Exact value per pixel known.
-class FakeBackend final : public Backend {
-public:
-    FakeBackend(uint32_t pixels, uint32_t strata, float noise) : strata_(strata), noise_(noise), accum_(pixels) {}
-    std::string name() const override { return "fake"; }
-    std::string deviceName() const override { return "test"; }
-    void upload(const SceneArrays&) override {}
-    void resize(uint32_t, uint32_t) override {}
-    void reset() override { std::fill(accum_.begin(), accum_.end(), AccumPixel{}); }
-    void renderPasses(const FrameParams& frame, uint32_t firstPass, uint32_t passCount) override {
-        for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
-            for (uint32_t i = 0; i < accum_.size(); ++i) {
-                const uint32_t s = stratumForPass(3, i, 0, pass, strata_);
-                SampleStream rng(3, i, pass);
-                const float u = (s + rng.next()) / strata_;
-                const float noise = noise_ * (rng.next() + rng.next() + rng.next() - 1.5f) * 2.0f;
-                accum_[i].add(Vec3(value(i, u) + noise), frame.inSecondHalf(pass), 1.0f);
-            }
-        }
-        ++calls;
-    }
-    void readAccumulation(std::vector<AccumPixel>& out) override { out = accum_; }
-    uint64_t raysTraced() const override { return 0; }
-    double traceRays(const std::vector<RayQuery>& queries, RayQueryKind, std::vector<RayAnswer>& out) override {
-        out.assign(queries.size(), RayAnswer{INFINITY, kMissAnswer});  // no scene: nothing is hit
-        return 0.0;
-    }
-
-    // A ramp plus a step whose position depends on the pixel (like a penumbra), integrated exactly below.
-    static float value(uint32_t i, float u) {
-        return u + (u < 0.2f + 0.6f * ((i * 37u) % 100u) / 100.0f ? 0.8f : 0.2f);
-    }
-    static double exact(uint32_t i) {
-        const double edge = 0.2 + 0.6 * ((i * 37u) % 100u) / 100.0;
-        return 0.5 + edge * 0.8 + (1.0 - edge) * 0.2;
-    }
-    double trueRelError() const {
-        double se = 0, mean = 0;
-        for (uint32_t i = 0; i < accum_.size(); ++i) {
-            const double d = accum_[i].sum[0] / accum_[i].count - exact(i);
-            se += d * d;
-            mean += exact(i);
-        }
-        return std::sqrt(se / accum_.size()) / (mean / accum_.size());
-    }
-    int calls = 0;
-
-private:
-    uint32_t strata_;
-    float noise_;
-    std::vector<AccumPixel> accum_;
-};
-
 // With the split following the cycle the estimate matches the true error at multiples of 2·cycle; split by
 // plain parity instead, the halves see different strata and it reads too high, more so with more passes.
 TEST(ErrorEstimate, StratifiedHalvesBracketTheTruth) {
@@ -167,29 +116,6 @@ TEST(ErrorEstimate, StratifiedHalvesBracketTheTruth) {
             EXPECT_GT(estimateError(accum).relError, 2.0 * backend.trueRelError()) << passes;
         }
     }
-}
-
-TEST(ProgressiveRender, TargetErrorStopsNearTheTarget) {
-    constexpr uint32_t kStrata = 12;
-    FakeBackend backend(4000, kStrata, 0.5f);
-    RenderLimits limits;
-    limits.passes = kMaxProgressivePasses;
-    limits.cyclePasses = kStrata;
-    limits.targetError = 0.01;
-    const RenderOutcome out = renderProgressive(backend, FrameParams{}, limits);
-    EXPECT_TRUE(out.reachedTarget);
-    EXPECT_EQ(out.passes % (2 * kStrata), 0u) << "checked only where the halves are balanced";
-    EXPECT_LE(out.estimatedRelError, limits.targetError);
-    EXPECT_GT(backend.trueRelError(), 0.6 * limits.targetError) << out.passes << " passes: stopped too late";
-    EXPECT_LT(backend.trueRelError(), 1.25 * limits.targetError) << out.passes << " passes";
-    EXPECT_LE(out.errorChecks, 12u);
-
-    // The pass limit still bounds it.
-    backend.reset();
-    limits.passes = 48;
-    const RenderOutcome capped = renderProgressive(backend, FrameParams{}, limits);
-    EXPECT_EQ(capped.passes, 48u);
-    EXPECT_FALSE(capped.reachedTarget);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Converts the npm package `bunny` (positions + cells) into scenes/assets/bunny.obj, normalised for the scenes.
-// Usage: node make_bunny.mjs <path of the installed bunny package> <output .obj>   (make_bunny.sh runs it)
+// Usage: node make_bunny.mjs <path of the installed bunny package> <output .obj>   (scripts/make_bunny.sh runs it)
 import { createRequire } from 'node:module';
 import { renameSync, writeFileSync } from 'node:fs';
 import { resolve } from 'node:path';
@@ -43,7 +43,7 @@ const lines = [
   `# from the npm package \`bunny\` ${pkg.version} (Mikola Lysenko, public domain), itself from the Stanford 3D`,
   '# Scanning Repository (graphics.stanford.edu/data/3Dscanrep). The thesis used a 70064-triangle version',
   '# (dt-grid stanford_bunny.obj) that cannot be fetched here.',
-  '# Written by scenes/assets/make_bunny.mjs (run scenes/assets/make_bunny.sh). Closed mesh, positions only',
+  '# Written by scenes/assets/make_bunny.mjs (run scripts/make_bunny.sh). Closed mesh, positions only',
   '# (no vt/vn), faces wound counter-clockwise seen from outside.',
   `# Normalised: +Y up, face towards -X as in the original scan, uniformly scaled to ${kHeight.toFixed(1)} units tall`,
   `# (${width} along x, ${depth} along z), standing on y = 0, bounding box centred on x = z = 0.`,

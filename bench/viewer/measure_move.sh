@@ -2,10 +2,11 @@
 # Time from a G move of an object to the first preview showing it, at 512x512 on the CPU, under Xvfb with real
 # input: click a sphere of scene 1, G, 20 mouse steps 0.1 s apart, a click; then Ctrl+Z and Ctrl+Q. Prints the
 # viewer's closing line ("object moves shown after A ms on average (worst W ms, N images)").
-# Usage: ui/measure_move.sh TRAZO [SCENE]
+# Usage: bench/viewer/measure_move.sh TRAZO [SCENE]
 set -u
+repo=$(cd "$(dirname "$0")/../.." && pwd)
 trazo=$(realpath "$1")
-scene=$(realpath "${2:-$(dirname "$0")/../scenes/scene1_area.scene}")
+scene=$(realpath "${2:-$repo/scenes/scene1_area.scene}")
 if [ -z "${TRAZO_INSIDE_XVFB:-}" ]; then
     TRAZO_INSIDE_XVFB=1 exec timeout 120 xvfb-run -a -s "-screen 0 1280x800x24" bash "$0" "$@"
 fi

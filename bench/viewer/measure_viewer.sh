@@ -3,10 +3,11 @@
 # with a continuous left drag for DRAG seconds (xdotool, a move every 10 ms), waits, and closes with Ctrl+Q. The
 # viewer's closing line gives the time to the first image (a preview) and to the first full-size image, the
 # frame rate while input arrived, and the passes per second.
-# Usage: ui/measure_viewer.sh TRAZO [SCENE] [W] [H] [BACKEND] [SETTLE] [DRAG]
+# Usage: bench/viewer/measure_viewer.sh TRAZO [SCENE] [W] [H] [BACKEND] [SETTLE] [DRAG]
 set -eu
+repo=$(cd "$(dirname "$0")/../.." && pwd)
 trazo=$(realpath "$1")
-scene=$(realpath "${2:-scenes/scene1_area.scene}")
+scene=$(realpath "${2:-$repo/scenes/scene1_area.scene}")
 width=${3:-1280}
 height=${4:-720}
 backend=${5:-cpu}

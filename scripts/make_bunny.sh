@@ -2,10 +2,10 @@
 # Writes scenes/assets/bunny.obj from the npm package `bunny` (the Stanford bunny); a no-op when up to date.
 # Needs node and npm (Node 20) and the npm registry; nothing else is downloaded.
 set -euo pipefail
-here="$(cd "$(dirname "$0")" && pwd)"
-out="$here/bunny.obj"
+assets="$(cd "$(dirname "$0")/../scenes/assets" && pwd)"
+out="$assets/bunny.obj"
 
-if [ -f "$out" ] && [ "$out" -nt "$here/make_bunny.mjs" ] && [ "$out" -nt "$here/make_bunny.sh" ]; then
+if [ -f "$out" ] && [ "$out" -nt "$assets/make_bunny.mjs" ] && [ "$out" -nt "$0" ]; then
   exit 0
 fi
 for tool in node npm; do
@@ -19,4 +19,4 @@ done
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 npm install --no-save --no-package-lock --no-audit --no-fund --loglevel=error --prefix "$tmp" bunny@1.0.1 >&2
-node "$here/make_bunny.mjs" "$tmp/node_modules/bunny" "$out"
+node "$assets/make_bunny.mjs" "$tmp/node_modules/bunny" "$out"
