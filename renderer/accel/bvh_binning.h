@@ -266,8 +266,10 @@ inline Partition partitionSse(PrimRef* p, uint32_t begin, uint32_t end, const Bi
 }
 #endif
 
-// The forms the builder runs.
-inline void binPrimitives(const PrimRef* refs, uint32_t count, const BinMapping& m, BinSet& bins) {
+// The forms the builder runs. binPrimitives stays out of line: inlined into chooseSplit it slows the build
+// (bvh_bench's "Trazo build").
+__attribute__((noinline)) inline void binPrimitives(const PrimRef* refs, uint32_t count, const BinMapping& m,
+                                                    BinSet& bins) {
 #if TRAZO_BVH_BINNING_SSE
     binPrimitivesSse(refs, count, m, bins);
 #else
