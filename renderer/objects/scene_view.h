@@ -7,6 +7,7 @@
 
 #include "core/feature_mask.h"
 #include "core/hd.h"
+#include "core/render_settings.h"
 #include "core/vec3.h"
 #include "objects/object_kinds.h"
 
@@ -41,16 +42,6 @@ struct SceneArrays;  // device/scene_arrays.h: the owning host copy
     X(MeshTriangle, triangles)          \
     X(TriangleCorners, triangleCorners) \
     X(WideBvhNode, topNodes)
-
-// The render settings kernels need, as plain values (from SceneSettings).
-struct RenderSettings {
-    Vec3 background;
-    uint32_t reflectionQuality;
-    uint32_t reflectionSteps;
-    uint32_t indirectQuality;
-    float colorBleeding;
-    uint32_t antialiasing;  // 1, 4 or 16
-};
 
 template <typename T>
 struct ArrayView {

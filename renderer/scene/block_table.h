@@ -1,7 +1,7 @@
 // Block tables (host): one table of parameter rows per scene and CSG block, as SPEC.md §3–§4 lists them. They
 // drive the readers, the scene writer, the viewer's edit widgets, the "did you mean" hints, and a test that
 // compares them with SPEC.md. Adding a parameter is one struct field (scene.h) and one row (scene_tables.cpp);
-// a Material parameter is one row of shading/material.h's list.
+// a Material parameter is one row of scene/material_fields.h's list.
 #pragma once
 
 #include <array>
@@ -28,7 +28,7 @@ struct TextureDraft {
     SourceLocation nameAt, sourceAt;
 };
 
-// The texture parameters of a Material (shading/material.h TRAZO_TEXTURE_SLOTS), by TextureSlot.
+// The texture parameters of a Material (scene/material_fields.h TRAZO_TEXTURE_SLOTS), by TextureSlot.
 struct TextureSlotInfo {
     std::string_view name, doc;
 };

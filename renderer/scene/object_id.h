@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "objects/object_kinds.h"
+#include "scene/object_kind_list.h"
 
 namespace trazo {
 

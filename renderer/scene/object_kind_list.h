@@ -5,9 +5,21 @@
 // keyword in a scene file).
 #pragma once
 
+#include <cstdint>
+
 #define TRAZO_OBJECT_KINDS(X)                       \
     X(SphereShape, spheres, Sphere, "Sphere")       \
     X(BoxShape, boxes, Box, "Box")                  \
     X(CylinderShape, cylinders, Cylinder, "Cylinder") \
     X(CsgShape, csgs, Csg, "CSG")                   \
     X(MeshShape, meshes, Mesh, "Mesh")
+
+namespace trazo {
+
+enum class ObjectKind : uint32_t {
+#define TRAZO_X(Shape, array, Kind, keyword) Kind,
+    TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
+};
+
+}  // namespace trazo

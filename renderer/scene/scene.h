@@ -11,7 +11,7 @@
 #include "core/affine.h"
 #include "core/vec3.h"
 #include "scene/diagnostic.h"
-#include "shading/material.h"
+#include "scene/material_fields.h"
 
 namespace trazo {
 
@@ -76,7 +76,7 @@ constexpr std::array<int32_t, kTextureSlotCount> noTextures() {
     return none;
 }
 
-// The Material block as read (shading/material.h lists its parameters and their defaults).
+// The Material block as read (scene/material_fields.h lists its parameters and their defaults).
 struct Material {
     std::string name;
 #define TRAZO_X(Type, name, fallback, ...) Type name = fallback;

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The folders of renderer/ include only folders to their left (docs/ARCHITECTURE.md, "Folders and include
+# order"): core, io → scene → shading, geometry, accel → objects → device → integrator → backends → render;
+# image sits on core and io only. Tests (*_test.cpp) aside. Prints each include that breaks the order.
+set -euo pipefail
+repo=$(cd "$(dirname "$0")/.." && pwd)
+cd "$repo/renderer"
+rank() {
+    case $1 in
+        core | io) echo 0 ;;
+        scene) echo 1 ;;
+        shading | geometry | accel) echo 2 ;;
+        objects) echo 3 ;;
+        device) echo 4 ;;
+        integrator) echo 5 ;;
+        backends) echo 6 ;;
+        render) echo 7 ;;
+        image) echo 1 ;;  # on core and io only (below); render/ and the app write images
+        *) echo 99 ;;
+    esac
+}
+bad=0
+while IFS= read -r line; do
+    file=${line%%:*}
+    from=${file%%/*}
+    to=$(sed -E 's/.*#include "([a-z_]+)\/.*/\1/' <<<"${line#*:}")
+    [ "$from" = "$to" ] && continue
+    [ -d "$to" ] || continue  # a header beside the file, or a generated one
+    allowed=1
+    if [ "$from" = image ]; then
+        case $to in core | io) ;; *) allowed=0 ;; esac
+    elif [ "$(rank "$to")" -ge "$(rank "$from")" ]; then
+        allowed=0  # to its right, or beside it (core and io, or shading, geometry and accel, stay apart)
+    fi
+    if [ $allowed = 0 ]; then
+        echo "renderer/$file: includes $to/ (to the right of $from/ in the include order)"
+        bad=1
+    fi
+done < <(grep -rn --include='*.h' --include='*.cpp' --include='*.cuh' --include='*.cu' -E '^#include "[a-z_]+/' . \
+             | sed 's|^\./||' | grep -v '_test\.cpp:' | sed -E 's/^([^:]+):[0-9]+:/\1:/')
+if [ $bad = 0 ]; then echo "include order: every renderer/ folder includes only folders to its left"; fi
+exit $bad
