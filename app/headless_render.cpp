@@ -12,7 +12,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "image/image_writer.h"
 #include "io/text_file.h"
 #include "progress_bar.h"

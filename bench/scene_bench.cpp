@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "backends/backend.h"
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "integrator/sample_variants.h"
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"

@@ -54,7 +54,7 @@ table=$(while read -r mangled regs stack stores loads; do
   perWarp=$(( (regs * 32 + 255) / 256 * 256 ))
   warps=$(( 65536 / perWarp )); (( warps > 64 )) && warps=64
   warps=$(( warps / (block / 32) * (block / 32) ))
-  # Feature bits (device/feature_mask.h): 2 area lights, 4 reflection, 16 refraction, 64 indirect.
+  # Feature bits (core/feature_mask.h): 2 area lights, 4 reflection, 16 refraction, 64 indirect.
   features=0
   [[ $kernel =~ \<([0-9]+)u?\> ]] && features=${BASH_REMATCH[1]}
   spillBudget=256; (( features & 64 )) && spillBudget=640

@@ -20,7 +20,7 @@
 #include <thread>
 #include <vector>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "fetched_assets.h"
 #include "render/strata_plan.h"
 #include "scene/scene_reader.h"

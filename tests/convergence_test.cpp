@@ -8,7 +8,7 @@
 #include <fstream>
 #include <memory>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "scene/scene_reader.h"
 #include "support/convergence_series.h"
 #include "test_paths.h"

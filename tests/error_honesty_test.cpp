@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "fetched_assets.h"
 #include "render/error_probe.h"
 #include "render/frame_setup.h"

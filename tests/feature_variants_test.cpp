@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "fetched_assets.h"
 #include "integrator/sample_variants.h"
 #include "render_harness.h"

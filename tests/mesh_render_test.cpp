@@ -7,7 +7,7 @@
 #include <random>
 #include <sstream>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "integrator/scene_intersect.h"
 #include "render_harness.h"
 #include "scene/scene_reader.h"

@@ -9,7 +9,7 @@
 #include "backends/backend.h"
 #include "core/rng.h"
 #include "accel/collapse_bvh.h"
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "fetched_assets.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "integrator/sample_variants.h"
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"

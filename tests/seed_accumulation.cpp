@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "render/frame_setup.h"
 #include "render/merge.h"
 #include "render/progressive_render.h"

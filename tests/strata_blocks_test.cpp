@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "render/strata_plan.h"
 #include "render_harness.h"
 #include "scene/scene_reader.h"

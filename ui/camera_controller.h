@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/aabb.h"
-#include "device/scene_arrays.h"
+#include "flatten/scene_arrays.h"
 #include "scene/scene.h"
 
 namespace trazo {

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "integrator/camera_frame.h"
 
 namespace trazo {

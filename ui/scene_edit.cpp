@@ -5,8 +5,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "device/flatten.h"
-#include "device/flatten_csg.h"
+#include "flatten/flatten.h"
+#include "flatten/flatten_csg.h"
 #include "io/text_file.h"
 #include "objects/box.h"
 #include "objects/cylinder.h"

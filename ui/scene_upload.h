@@ -4,8 +4,8 @@
 #pragma once
 
 #include "backends/backend.h"
-#include "device/array_mask.h"
-#include "device/flatten.h"
+#include "flatten/array_mask.h"
+#include "flatten/flatten.h"
 #include "scene/scene.h"
 
 namespace trazo {

@@ -12,7 +12,7 @@
 #include "accel/bvh_build.h"
 #include "accel/collapse_bvh.h"
 #include "core/rng.h"
-#include "device/flatten_mesh.h"
+#include "flatten/flatten_mesh.h"
 #include "backends/backend.h"
 #include "backends/cpu/cpu_kernels.h"
 #include "scene/obj_reader.h"

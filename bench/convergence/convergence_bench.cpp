@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "scene/scene_reader.h"
 #include "support/convergence_series.h"
 #include "support/plot.h"

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "backends/backend.h"
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "scene/scene_reader.h"
 #include "viewer_session.h"
 

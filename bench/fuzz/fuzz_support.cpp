@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "backends/backend.h"
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
 #include "render/strata_plan.h"

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "device/array_mask.h"
-#include "device/scene_arrays.h"
+#include "flatten/array_mask.h"
+#include "flatten/scene_arrays.h"
 #include "integrator/frame_params.h"
 #include "integrator/ray_query.h"
 #include "core/accumulation.h"

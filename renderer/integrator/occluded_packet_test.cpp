@@ -13,7 +13,7 @@
 #include <string>
 
 #include "backends/cpu/cpu_kernels.h"
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "integrator/direct_light.h"
 #include "integrator/packet_test_scenes.h"
 #include "scene/scene_reader.h"

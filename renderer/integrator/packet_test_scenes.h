@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"
 

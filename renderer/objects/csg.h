@@ -248,7 +248,7 @@ inline Aabb objectBounds(const SceneView& scene, const CsgShape& csg) {
 }
 
 // Appends the solid's post-order nodes to out.csgNodes and its CsgShape to out.csgs; false for a CSG block
-// whose tree did not load (device/flatten_csg.cpp).
+// whose tree did not load (flatten/flatten_csg.cpp).
 bool appendObject(const Csg& csg, SceneArrays& out, uint32_t& index);
 
 }  // namespace trazo

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "device/flatten_csg.h"
+#include "flatten/flatten_csg.h"
 #include "objects/csg.h"
 
 namespace trazo {

@@ -113,7 +113,7 @@ inline Aabb objectBounds(const SceneView& scene, const MeshShape& mesh) {
     return wideNodeBounds(scene.meshNodes[mesh.nodeOffset]);
 }
 
-// Meshes have no appendObject: flatten() places them first (placeMeshes, device/mesh_reuse.h), building each
+// Meshes have no appendObject: flatten() places them first (placeMeshes, flatten/mesh_reuse.h), building each
 // one's BVH or reusing it from an earlier flatten.
 
 }  // namespace trazo

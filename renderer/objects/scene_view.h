@@ -24,7 +24,7 @@ struct MaterialData;
 struct PointLightData;
 struct AreaLightData;
 struct TextureData;
-struct SceneArrays;  // device/scene_arrays.h: the owning host copy
+struct SceneArrays;  // flatten/scene_arrays.h: the owning host copy
 
 // Every array of the flattened scene, once: the object kinds' shape arrays (scene/object_kind_list.h), then
 // the rest. SceneArrays, SceneView, hostView() and the backends' uploads are all generated from this list,

@@ -143,7 +143,7 @@ inline Aabb objectBounds(const SceneView&, const SphereShape& s) {
 }
 
 // Appends the sphere to out.spheres; `index`: its place there. Templated on the arrays so that this header
-// need not see SceneArrays (device/scene_arrays.h, which includes it).
+// need not see SceneArrays (flatten/scene_arrays.h, which includes it).
 template <class Arrays>
 bool appendObject(const Sphere& sphere, Arrays& out, uint32_t& index) {
     index = (uint32_t)out.spheres.size();

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "core/rng.h"
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
 #include "scene/scene_reader.h"

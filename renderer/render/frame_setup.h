@@ -3,7 +3,7 @@
 #pragma once
 
 #include "backends/backend.h"
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "render/resolve.h"
 #include "render/strata_plan.h"
 #include "scene/scene.h"

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "device/scene_arrays.h"
+#include "flatten/scene_arrays.h"
 #include "render/pass_range.h"
 #include "render/progressive_render.h"
 #include "render/strata_plan.h"

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "device/scene_arrays.h"
+#include "flatten/scene_arrays.h"
 #include "integrator/strata.h"
 #include "scene/diagnostic.h"
 #include "scene/scene.h"

@@ -1,5 +1,5 @@
 // The material (SPEC §3 Material): its parameters listed once. The host struct (scene/scene.h Material), the
-// kernels' MaterialData (shading/material.h), the host-to-kernel conversion (device/flatten.cpp) and the
+// kernels' MaterialData (shading/material.h), the host-to-kernel conversion (flatten/flatten.cpp) and the
 // Material block's table rows (scene/scene_tables.cpp: reader, writer, checks, viewer widgets) are all
 // generated from the two lists below, so a parameter the kernel reads is one row here plus its use. Plain
 // macros and constants: kernel code includes this too.

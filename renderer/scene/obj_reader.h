@@ -21,7 +21,7 @@ inline constexpr size_t kMaxObjLineBytes = size_t(1) << 20;
 
 // ---------------------------------------------------------------------------------------------------------
 // What a MeshData from readObjFile / readObjText guarantees (the OBJ mesh contract). Code that indexes a
-// MeshData (device/flatten_mesh.cpp: prepareMesh, appendMesh) relies on this and on nothing else:
+// MeshData (flatten/flatten_mesh.cpp: prepareMesh, appendMesh) relies on this and on nothing else:
 //
 //  1. Counts: corners.size() is a multiple of 3, at least 3 and at most 3 · kMaxObjTriangles (so triangle
 //     and corner numbers fit a uint32_t); positions.size() and normals.size() are at most kMaxObjElements;

@@ -126,7 +126,7 @@ struct Cylinder {
     SourceLocation where;
 };
 
-// A mesh as read from its OBJ file, before the Mesh block's transforms (device/flatten_mesh.h places it).
+// A mesh as read from its OBJ file, before the Mesh block's transforms (flatten/flatten_mesh.h places it).
 struct MeshData {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;        // one per position-index corner, see `corners`

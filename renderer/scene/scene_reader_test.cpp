@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 #include "fetched_assets.h"
 #include "scene/csg_reader.h"
 #include "test_paths.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "backends/backend.h"
-#include "device/scene_arrays.h"
+#include "flatten/scene_arrays.h"
 #include "render/error_estimate.h"
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"

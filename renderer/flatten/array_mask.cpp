@@ -1,6 +1,6 @@
 // Which arrays of two flattened scenes differ, compared bytewise (the element types are plain structs
 // without padding holes that flatten leaves unwritten: every one is value-initialised or fully assigned).
-#include "device/array_mask.h"
+#include "flatten/array_mask.h"
 
 #include <cstring>
 

@@ -1,6 +1,6 @@
 // CSG flattening (host): post-order nodes; leaf transform = CSG block ∘ operations (outer to inner) ∘
 // leaf transforms ∘ the map from the canonical shape to the primitive's own parameters.
-#include "device/flatten_csg.h"
+#include "flatten/flatten_csg.h"
 
 #include <cmath>
 

@@ -2,7 +2,7 @@
 // earlier flatten. Host code, called by flatten().
 #pragma once
 
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 
 namespace trazo {
 

@@ -2,7 +2,7 @@
 // What is shared between triangles (world positions, computed normals, tangent sums) is computed once, and
 // each triangle's corners are then derived from it independently, straight into their place in BVH order:
 // no per-mesh copy of the triangles or corners is ever held beside SceneArrays.
-#include "device/flatten_mesh.h"
+#include "flatten/flatten_mesh.h"
 
 #include <algorithm>
 #include <cassert>

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/affine.h"
-#include "device/scene_arrays.h"
+#include "flatten/scene_arrays.h"
 #include "scene/scene.h"
 
 namespace trazo {

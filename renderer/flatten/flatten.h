@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "core/affine.h"
-#include "device/array_mask.h"
-#include "device/scene_arrays.h"
+#include "flatten/array_mask.h"
+#include "flatten/scene_arrays.h"
 #include "scene/object_id.h"
 #include "scene/scene.h"
 

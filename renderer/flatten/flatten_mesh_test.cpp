@@ -1,6 +1,6 @@
 // Mesh preparation: transforms (positions, normals by the inverse transpose), computed normals, Lengyel
 // tangents and their handedness, and the BVH order of what appendMesh uploads.
-#include "device/flatten_mesh.h"
+#include "flatten/flatten_mesh.h"
 
 #include <gtest/gtest.h>
 

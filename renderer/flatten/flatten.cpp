@@ -1,9 +1,9 @@
 // Flattening of the host scene into the arrays kernels read, and the scene's feature mask.
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 
-#include "device/flatten_csg.h"
-#include "device/flatten_mesh.h"
-#include "device/mesh_reuse.h"
+#include "flatten/flatten_csg.h"
+#include "flatten/flatten_mesh.h"
+#include "flatten/mesh_reuse.h"
 
 #include "accel/bvh_build.h"
 #include "accel/collapse_bvh.h"

@@ -1,7 +1,7 @@
 // flattenCsg(): a host CSG tree -> post-order CsgNodeData with every transform folded into each leaf.
 #pragma once
 
-#include "device/scene_arrays.h"
+#include "flatten/scene_arrays.h"
 #include "scene/scene.h"
 
 namespace trazo {

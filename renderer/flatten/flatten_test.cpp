@@ -1,7 +1,7 @@
 // flatten(): every drawn object maps back to its host object through `sources` after the top-level BVH
 // reorders them, and reusing an earlier result's meshes gives the same bytes as flattening from scratch
 // (every shipped scene, after edits and after edits undone).
-#include "device/flatten.h"
+#include "flatten/flatten.h"
 
 #include <gtest/gtest.h>
 

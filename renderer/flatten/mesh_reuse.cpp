@@ -1,10 +1,10 @@
 // Mesh reuse across flattens. A mesh's arrays do not depend on where they sit: its BVH's child and triangle
 // indices count from its own MeshShape offsets, so a reused mesh is its old segment copied to its new place.
-#include "device/mesh_reuse.h"
+#include "flatten/mesh_reuse.h"
 
 #include <cstring>
 
-#include "device/flatten_mesh.h"
+#include "flatten/flatten_mesh.h"
 
 namespace trazo {
 
