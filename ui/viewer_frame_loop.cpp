@@ -32,7 +32,7 @@ double secondsSince(ViewerApp::Clock::time_point t0) {
 }  // namespace
 
 ViewerApp::ViewerApp(const ViewerOptions& options, Window& window, ViewerSession& session, Clock::time_point start,
-          float panelWidth)
+                     float panelWidth)
     : options_(options), window_(window), session_(session),
       exports_(options.scenePath, options.screenshot, state_), stats_(start), editor_(session, options.scenePath),
       files_(options.scenePath, !options.frames, session, editor_, exports_, state_, window) {

@@ -40,7 +40,7 @@ struct FeatureName {
     Feature bit;
     const char* name;
 };
-inline constexpr FeatureName kFeatureNames[kFeatureCount] = {
+constexpr FeatureName kFeatureNames[kFeatureCount] = {
 #define TRAZO_X(bit, name) {bit, name},
     TRAZO_FEATURES(TRAZO_X)
 #undef TRAZO_X

@@ -72,6 +72,9 @@ template <FeatureMask F>
 TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const StrataKey& pixelStrata,
                              const StrataBlocks& blocks, SampleStream& rng, uint32_t& rays,
                              const CameraHit* given = nullptr) {
+#if !TRAZO_SHADOW_PACKETS
+    (void)given;  // only the host's tile loop passes one
+#endif
     const RenderSettings& settings = scene.settings;
     PendingSlot stack[kMaxPendingRays];
     int pending = 0;
@@ -171,6 +174,8 @@ TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uin
         color += traceCameraRay<F>(scene, given->ray, pixelStrata, frame.blocks, rng, rays, given);
         return color;
     }
+#else
+    (void)given;  // only the host's tile loop passes one
 #endif
     const uint32_t k = antialiasingSide(scene.settings.antialiasing);
     const StrataBlock positions = pixelStrata.block(kGridAntialiasing, k * k, frame.blocks.antialiasing);
