@@ -25,7 +25,6 @@ public:
     // The window's batch budget: long enough that the per-batch display update is a small share, short enough
     // that an edit restarts the image quickly. The window redraws independently of it.
     static constexpr double kBatchSeconds = 1.0 / 30.0;
-    static constexpr double kEstimateInterval = ProgressiveAccumulation::kEstimateInterval;
 
     // `scene` must have been read without errors. The render size starts as width × height (0: the scene's
     // RenderWidth × RenderHeight). Uploads, allocates and clears: ready for passes.
