@@ -43,9 +43,14 @@ save() {  # Ctrl+S (again if the key was lost), then copies the saved scene to $
     done
     fail "Ctrl+S did not save the scene"
 }
+hold() {  # a key ImGui reads (not a viewer command), held across frames: ImGui 1.86 misses a press and release
+    # that both come between two of its frames, as they do when frames are slow (the sanitized build under load).
+    xdotool keydown "$1" sleep "${2:-0.3}" keyup "$1"
+    sleep 0.3
+}
 open_path() {  # $1, expecting a log line matching $2: Ctrl+O focuses the Open panel's path field (all of it
-    # selected), the path is typed over it, Enter opens. Keys typed before the field has the focus are lost:
-    # tried again, like a user would.
+    # selected), the path is typed over it, Enter opens. Keys typed before the field has the focus are lost, and
+    # an Enter ImGui did not see leaves the field active: each is tried again, like a user would.
     local from
     from=$(lines)
     for _ in 1 2 3; do
@@ -53,8 +58,11 @@ open_path() {  # $1, expecting a log line matching $2: Ctrl+O focuses the Open p
         sleep 0.7
         xdotool type --delay 20 "$1"
         sleep 0.2
-        key Return
-        wait_log "$2" "$((from + 1))" 60 && return 0
+        for hold_s in 0.3 0.8 1.5; do
+            hold Return "$hold_s"
+            wait_log "$2" "$((from + 1))" 60 && return 0
+            [ "$(lines)" -gt "$from" ] && break  # Enter was seen (a wrong path's message): type it again
+        done
     done
     return 1
 }
@@ -268,8 +276,7 @@ case "$(xdotool getwindowname "$wid")" in *" *") ;; *) fail "the title does not 
 key ctrl+q
 sleep 1
 kill -0 "$pid" 2>/dev/null || fail "Ctrl+Q with unsaved edits quit without asking"
-# Held across frames: ImGui 1.86 misses a press and release that both come between two of its frames.
-xdotool keydown Escape sleep 0.3 keyup Escape sleep 0.3
+hold Escape
 key ctrl+z
 for _ in $(seq 50); do [ -f "$recovery" ] || break; sleep 0.1; done
 [ -f "$recovery" ] && fail "the recovery file stayed after every edit was undone"
