@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The folders of renderer/ include only folders to their left (docs/ARCHITECTURE.md, "Folders and include
-# order"): core, io → scene → shading, geometry, accel → objects → flatten → integrator → backends → render;
+# order"): core, io → shading, geometry, accel → objects → scene → flatten → integrator → backends → render;
 # image sits on core and io only. Tests (*_test.cpp) aside. Prints each include that breaks the order.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -8,9 +8,9 @@ cd "$repo/renderer"
 rank() {
     case $1 in
         core | io) echo 0 ;;
-        scene) echo 1 ;;
-        shading | geometry | accel) echo 2 ;;
-        objects) echo 3 ;;
+        shading | geometry | accel) echo 1 ;;
+        objects) echo 2 ;;
+        scene) echo 3 ;;
         flatten) echo 4 ;;
         integrator) echo 5 ;;
         backends) echo 6 ;;

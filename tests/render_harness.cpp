@@ -44,15 +44,6 @@ RenderedImage renderScene(Scene& scene, const Diagnostics& diags, const RenderRe
     return image;
 }
 
-// Rounded from double, so a coordinate's only new error is its final rounding to float.
-Vec3 scaled(Vec3 p, double factor) { return Vec3(float(p.x * factor), float(p.y * factor), float(p.z * factor)); }
-float scaled(float v, double factor) { return float(v * factor); }
-
-void appendUniformScale(std::vector<TransformStep>& steps, double factor) {
-    const float f = float(factor);
-    steps.push_back({TransformStep::Kind::Scale, Vec3(f, f, f), 0.0f});  // the last step acts on the world
-}
-
 }  // namespace
 
 RenderedImage renderSceneText(const std::string& sceneText, const RenderRequest& request) {
@@ -68,26 +59,18 @@ RenderedImage renderSceneFile(const std::string& path, const RenderRequest& requ
 }
 
 void scaleSceneAboutOrigin(Scene& scene, double factor) {
-    const auto scale = [factor](auto& value) { value = scaled(value, factor); };
-    scale(scene.camera.pov);
-    scale(scene.camera.poi);
-    for (Sphere& sphere : scene.spheres) {
-        scale(sphere.center);
-        scale(sphere.radius);
-    }
-    for (Box& box : scene.boxes) appendUniformScale(box.transforms, factor);
-    for (Cylinder& cylinder : scene.cylinders) {
-        scale(cylinder.base);
-        scale(cylinder.height);
-        scale(cylinder.radius);
-    }
-    for (Mesh& mesh : scene.meshes) appendUniformScale(mesh.transforms, factor);
-    for (Csg& csg : scene.csgs) appendUniformScale(csg.transforms, factor);
-    for (PointLight& light : scene.pointLights) scale(light.position);
+    // Rounded from double (scene/object_basics.h), so a coordinate's only new error is its final rounding.
+    scene.camera.pov = scaledPoint(scene.camera.pov, factor);
+    scene.camera.poi = scaledPoint(scene.camera.poi, factor);
+#define TRAZO_X(Shape, array, Kind, keyword) \
+    for (Kind & object : scene.array) scaleAboutOrigin(object, factor);
+    TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
+    for (PointLight& light : scene.pointLights) light.position = scaledPoint(light.position, factor);
     for (AreaLight& light : scene.areaLights) {
-        scale(light.position);
-        scale(light.width);
-        scale(light.height);
+        light.position = scaledPoint(light.position, factor);
+        light.width = float(light.width * factor);
+        light.height = float(light.height * factor);
     }
 }
 

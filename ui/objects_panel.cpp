@@ -179,21 +179,28 @@ void drawObjectList(const Scene& scene, ObjectsPanelState& state, ObjectsPanelAc
 DirtyFlags drawAddButtons(Scene& scene, ObjectsPanelState& state, ObjectsPanelActions& actions, Vec3 viewCentre) {
     DirtyFlags dirty = kDirtyNone;
     ImGui::TextDisabled("Add at the view centre:");
-    bool first = true;
-    for (const auto& [label, kind] : {std::pair{"Sphere", Kind::Sphere}, std::pair{"Box", Kind::Box},
-                                      std::pair{"Cylinder", Kind::Cylinder}, std::pair{"Point light", Kind::PointLight},
-                                      std::pair{"Area light", Kind::AreaLight}}) {
-        if (!first) ImGui::SameLine();
-        first = false;
-        if (ImGui::SmallButton(label)) finish(actions, addAndSelect(scene, state.selection, kind, viewCentre), dirty);
+    // Every kind the list (objects/object_kind_list.h) makes in place, then the lights; the kinds read from a
+    // file below, from the path typed.
+    std::vector<std::pair<const char*, Kind>> inPlace, fromFile;
+#define TRAZO_X(Shape, array, HostKind, keyword) \
+    (HostKind::kReadFromFile ? fromFile : inPlace).push_back({keyword, Kind::HostKind});
+    TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
+    inPlace.push_back({"Point light", Kind::PointLight});
+    inPlace.push_back({"Area light", Kind::AreaLight});
+    for (size_t i = 0; i < inPlace.size(); ++i) {
+        if (i > 0) ImGui::SameLine();
+        if (ImGui::SmallButton(inPlace[i].first))
+            finish(actions, addAndSelect(scene, state.selection, inPlace[i].second, viewCentre), dirty);
     }
     ImGui::InputText("File", state.filePath, sizeof state.filePath);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("an .obj or .csg file; a relative path starts at the scene's folder");
-    for (const auto& [label, kind] : {std::pair{"Add mesh", Kind::Mesh}, std::pair{"Add CSG", Kind::Csg}}) {
-        if (kind == Kind::Csg) ImGui::SameLine();
-        if (!ImGui::SmallButton(label)) continue;
+    for (size_t i = 0; i < fromFile.size(); ++i) {
+        if (i > 0) ImGui::SameLine();
+        if (!ImGui::SmallButton((std::string("Add ") + fromFile[i].first).c_str())) continue;
         Diagnostics diags;
-        const ObjectEdit edit = addFileAndSelect(scene, state.selection, kind, state.filePath, viewCentre, diags);
+        const ObjectEdit edit =
+            addFileAndSelect(scene, state.selection, fromFile[i].second, state.filePath, viewCentre, diags);
         state.status = errorsOf(diags);
         finish(actions, edit, dirty);
     }

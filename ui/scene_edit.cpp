@@ -6,12 +6,7 @@
 #include <filesystem>
 
 #include "flatten/flatten.h"
-#include "flatten/flatten_csg.h"
 #include "io/text_file.h"
-#include "objects/box.h"
-#include "objects/cylinder.h"
-#include "objects/csg.h"
-#include "objects/sphere.h"
 #include "scene/csg_reader.h"
 #include "scene/obj_reader.h"
 #include "scene/transform_checks.h"
@@ -40,32 +35,9 @@ constexpr bool kHasTransforms = requires(T t) { t.transforms; };
 template <class T>
 constexpr bool kHasMaterial = requires(T t) { t.material; };
 
-// The tree's bounds without the CSG block's own transforms (flattenCsg's root box).
-Aabb csgObjectBounds(const std::shared_ptr<const CsgTree>& tree) {
-    if (!tree || tree->root < 0) return Aabb{};
-    Csg bare;
-    bare.tree = tree;
-    std::vector<CsgNodeData> nodes;
-    const CsgShape shape = flattenCsg(bare, nodes);
-    const CsgNodeData& root = nodes[shape.firstNode + shape.nodeCount - 1];
-    Aabb b;
-    b.grow(root.boundsMin);
-    b.grow(root.boundsMax);
-    return b;
-}
-
-Aabb boundsOf(const Sphere& s) { return objectBounds(SceneView{}, SphereShape{s.center, s.radius}); }
-Aabb boundsOf(const Cylinder& c) {
-    return objectBounds(SceneView{}, CylinderShape{c.base, normalize(c.axis), c.height, c.radius});
-}
-Aabb boundsOf(const Box& b) {
-    const Affine3 worldFromObject = composeTransforms(b.transforms);
-    return objectBounds(SceneView{}, BoxShape{inverse(worldFromObject), worldFromObject});
-}
-Aabb boundsOf(const Mesh& m) { return m.data ? transformedBox(meshObjectBounds(*m.data), m.transforms) : Aabb{}; }
-Aabb boundsOf(const Csg& c) { return transformedBox(csgObjectBounds(c.tree), c.transforms); }
-Aabb boundsOf(const PointLight& l) { return Aabb{l.position, l.position}; }
-Aabb boundsOf(const AreaLight& l) {
+// The lights' bounds and moves; the object kinds' are in scene/kinds/<kind>.h.
+Aabb hostBounds(const PointLight& l) { return Aabb{l.position, l.position}; }
+Aabb hostBounds(const AreaLight& l) {
     Vec3 u, v;
     areaLightAxes(l.direction, l.rollAngle, u, v);
     u = u * (0.5f * l.width);
@@ -76,26 +48,8 @@ Aabb boundsOf(const AreaLight& l) {
     return b;
 }
 
-bool isZero(Vec3 v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f; }
-
-void translateSteps(std::vector<TransformStep>& steps, Vec3 delta) {
-    if (!steps.empty() && steps.back().kind == Step::Translation) {
-        steps.back().value += delta;
-        if (isZero(steps.back().value)) steps.pop_back();  // exactly zero: the map without it is the same
-    } else if (!isZero(delta)) {
-        steps.push_back({Step::Translation, delta, 0.0f});
-    }
-}
-
-void translate(Sphere& s, Vec3 d) { s.center += d; }
-void translate(Cylinder& c, Vec3 d) { c.base += d; }
 void translate(PointLight& l, Vec3 d) { l.position += d; }
 void translate(AreaLight& l, Vec3 d) { l.position += d; }
-template <class T>
-    requires kHasTransforms<T>
-void translate(T& object, Vec3 d) {
-    translateSteps(object.transforms, d);
-}
 
 // A Mesh's file: shared with another object of the scene that names it, else read. Null after reporting.
 std::shared_ptr<const MeshData> loadMeshData(const Scene& scene, const std::string& path, Diagnostics& diags) {
@@ -222,7 +176,7 @@ std::vector<TransformStep>* objectTransforms(Scene& scene, ObjectId id) {
 }
 
 Aabb objectWorldBounds(const Scene& scene, ObjectId id) {
-    return visitKind(scene, id.kind, [&](const auto& objects) { return boundsOf(objects.at(id.index)); });
+    return visitKind(scene, id.kind, [&](const auto& objects) { return hostBounds(objects.at(id.index)); });
 }
 
 Vec3 objectAnchor(const Scene& scene, ObjectId id) {
@@ -240,26 +194,22 @@ float newObjectSize(const Camera& camera) {
 
 ObjectId addObject(Scene& scene, ObjectId::Kind kind, Vec3 at, float size) {
     if (!validSize(size)) size = 1.0f;
-    const float half = 0.5f * size;
-    switch (kind) {
-        case ObjectId::Kind::Sphere: scene.spheres.push_back({kDefaultMaterial, at, half, {}}); break;
-        case ObjectId::Kind::Box:
-            scene.boxes.push_back({kDefaultMaterial, {{Step::Scale, Vec3(size), 0.0f}, {Step::Translation, at, 0.0f}}, {}});
-            break;
-        case ObjectId::Kind::Cylinder:
-            scene.cylinders.push_back({kDefaultMaterial, at - Vec3(0, half, 0), Vec3(0, 1, 0), size, half, {}});
-            break;
-        case ObjectId::Kind::PointLight: scene.pointLights.push_back({at, Vec3(1, 1, 1), {}}); break;
-        case ObjectId::Kind::AreaLight: {
+    return visitKind(scene, kind, [&](auto& objects) {
+        using T = typename std::decay_t<decltype(objects)>::value_type;
+        if constexpr (std::is_same_v<T, PointLight>) {
+            objects.push_back({at, Vec3(1, 1, 1), {}});
+        } else if constexpr (std::is_same_v<T, AreaLight>) {
             AreaLight light;
             light.position = at;
             light.width = light.height = size;
-            scene.areaLights.push_back(light);
-            break;
+            objects.push_back(light);
+        } else {
+            std::optional<T> added = newObject(KindTag<T>{}, at, size);
+            if (!added) return ObjectId{kind, uint32_t(objects.size())};  // read from a file: addObjectFromFile
+            objects.push_back(std::move(*added));
         }
-        default: return {kind, uint32_t(objectCount(scene, kind))};  // Mesh, CSG: addObjectFromFile
-    }
-    return {kind, uint32_t(objectCount(scene, kind) - 1)};
+        return ObjectId{kind, uint32_t(objects.size() - 1)};
+    });
 }
 
 std::optional<ObjectId> addObjectFromFile(Scene& scene, ObjectId::Kind kind, const std::string& path, Vec3 at,
@@ -270,10 +220,10 @@ std::optional<ObjectId> addObjectFromFile(Scene& scene, ObjectId::Kind kind, con
     }
     auto place = [&](auto& objects) -> std::optional<ObjectId> {
         using T = typename std::decay_t<decltype(objects)>::value_type;
-        if constexpr (std::is_same_v<T, Mesh> || std::is_same_v<T, Csg>) {
+        if constexpr (std::is_same_v<T, Mesh> || std::is_same_v<T, Csg>) {  // loadInto reads their files
             T object;
             if (!loadInto(scene, object, path, diags)) return std::nullopt;
-            const Aabb b = boundsOf(object);
+            const Aabb b = hostBounds(object);
             translateSteps(object.transforms, b.empty() ? at : at - b.centroid());
             objects.push_back(std::move(object));
             return ObjectId{kind, uint32_t(objects.size() - 1)};

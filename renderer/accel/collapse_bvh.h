@@ -15,9 +15,6 @@ namespace trazo {
 // root with one leaf child; an empty one stays empty. Needs leaves of ≤ kBvhMaxLeafSize primitives.
 std::vector<WideBvhNode> collapseBvh(const Bvh& bvh);
 
-// The union of a wide node's child boxes (for the root: the whole BVH's bounds).
-Aabb wideNodeBounds(const WideBvhNode& node);
-
 // The most entries a traversal of this BVH (nodes[0] its root, `count` nodes) keeps on its stack: each interior
 // node on the way down pushes the children it enters but one, so a node needs (children − 1) above what its
 // neediest interior child needs. Bounds traverseClosest and traverseAny alike; 0 for an empty BVH.

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "accel/bvh_node.h"
+#include "core/aabb.h"
 #include "core/hd.h"
 
 namespace trazo {
@@ -38,5 +39,9 @@ struct alignas(128) WideBvhNode {
     uint32_t padding[kBvhWidth];    // to 128 bytes: a node is two whole cache lines
 };
 static_assert(sizeof(WideBvhNode) == 128, "a node should fill exactly two 64-byte cache lines");
+
+// The union of a wide node's child boxes (for the root: the whole BVH's bounds). Host code
+// (accel/collapse_bvh.cpp).
+Aabb wideNodeBounds(const WideBvhNode& node);
 
 }  // namespace trazo

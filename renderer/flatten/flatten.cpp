@@ -134,7 +134,7 @@ FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
     const SceneSettings& s = scene.settings;
     placeMeshes(scene, previous, result);  // meshes first: only they write the mesh arrays
 
-    // Every object of every kind, kind by kind in the order of scene/object_kind_list.h.
+    // Every object of every kind, kind by kind in the order of objects/object_kind_list.h.
     auto add = [&](ObjectKind kind, const char* keyword, uint32_t hostIndex, const auto& object, const auto& shapes) {
         uint32_t index = 0;
         if constexpr (std::is_same_v<std::decay_t<decltype(object)>, Mesh>) {

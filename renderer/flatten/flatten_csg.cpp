@@ -6,6 +6,7 @@
 
 #include "core/aabb.h"
 #include "objects/csg.h"
+#include "scene/transform_checks.h"
 
 namespace trazo {
 
@@ -101,6 +102,19 @@ bool appendObject(const Csg& csg, SceneArrays& out, uint32_t& index) {
     index = (uint32_t)out.csgs.size();
     out.csgs.push_back(flattenCsg(csg, out.csgNodes));
     return true;
+}
+
+Aabb hostBounds(const Csg& c) {
+    if (!c.tree || c.tree->root < 0) return Aabb{};
+    Csg bare;  // the tree without the block's own transforms: flattenCsg's root box, then the 8 corners moved
+    bare.tree = c.tree;
+    std::vector<CsgNodeData> nodes;
+    const CsgShape shape = flattenCsg(bare, nodes);
+    const CsgNodeData& root = nodes[shape.firstNode + shape.nodeCount - 1];
+    Aabb b;
+    b.grow(root.boundsMin);
+    b.grow(root.boundsMax);
+    return transformedBox(b, c.transforms);
 }
 
 }  // namespace trazo

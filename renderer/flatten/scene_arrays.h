@@ -1,5 +1,5 @@
-// SceneArrays: the owning host copy of the flattened scene (what Backend::upload takes), the element types
-// that are not an object kind's or the material's (lights), and hostView(), the SceneView of host-resident arrays.
+// SceneArrays: the owning host copy of the flattened scene (what Backend::upload takes), and hostView(), the
+// SceneView of host-resident arrays.
 #pragma once
 
 #include <cstdint>
@@ -7,6 +7,7 @@
 
 #include "accel/wide_bvh_node.h"
 #include "core/vec3.h"
+#include "objects/light_data.h"
 #include "objects/rectangle.h"
 #include "objects/scene_view.h"
 #include "objects/visit_object.h"  // every object kind's header
@@ -14,17 +15,6 @@
 #include "shading/texture.h"
 
 namespace trazo {
-
-struct PointLightData {
-    Vec3 position;
-    Vec3 color;
-};
-
-struct AreaLightData {
-    RectangleShape rect;
-    Vec3 color;
-    uint32_t cellsU, cellsV;  // Subdivision: strata of the light's surface
-};
 
 struct SceneArrays {
 #define TRAZO_X(T, name, ...) std::vector<T> name;

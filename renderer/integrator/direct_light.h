@@ -6,6 +6,7 @@
 #include "integrator/scene_intersect.h"
 #include "integrator/shading_point.h"
 #include "shading/cook_torrance.h"
+#include "shading/material.h"
 #include "shading/oren_nayar.h"
 // Host code that g++ compiles for x86-64 (not the device, nor nvcc's host pass, which renders nothing): an area
 // light's shadow rays traced in packets (occluded_packet.h).

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "accel/bvh_traverse.h"
-#include "flatten/scene_arrays.h"
+#include "objects/light_data.h"
 #include "objects/rectangle.h"
 #include "objects/visit_object.h"
 

@@ -6,6 +6,8 @@
 #include "geometry/surface_frame.h"
 #include "integrator/scene_intersect.h"
 #include "integrator/shading_point.h"
+#include "shading/material.h"
+#include "shading/texture.h"
 
 namespace trazo {
 

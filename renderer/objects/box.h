@@ -1,6 +1,6 @@
 // The box object kind (host and device): the unit cube [-0.5, 0.5]³ mapped by an affine transform (any
-// parallelepiped), its ray intersection (a slab test in the box's object space), texture frame, bounds and
-// flattening. Texture frame: each face maps its unit square to [0,1]²; side faces have v up (+Y of the box),
+// parallelepiped), its ray intersection (a slab test in the box's object space), texture frame and bounds (the
+// host block: scene/kinds/box.h). Texture frame: each face maps its unit square to [0,1]²; side faces have v up (+Y of the box),
 // the top face has u = +X and v = −Z, the bottom u = +X and v = +Z (all in the box's object space).
 #pragma once
 
@@ -13,7 +13,6 @@
 #include "geometry/shape_hit.h"
 #include "geometry/surface_frame.h"
 #include "objects/scene_view.h"
-#include "scene/scene.h"
 
 namespace trazo {
 
@@ -119,15 +118,6 @@ inline Aabb objectBounds(const SceneView&, const BoxShape& box) {
         b.grow(box.worldFromObject.applyToPoint(
             Vec3((c & 1) ? 0.5f : -0.5f, (c & 2) ? 0.5f : -0.5f, (c & 4) ? 0.5f : -0.5f)));
     return b;
-}
-
-// Appends the box to out.boxes (templated on the arrays: see the sphere's appendObject).
-template <class Arrays>
-bool appendObject(const Box& box, Arrays& out, uint32_t& index) {
-    const Affine3 worldFromObject = composeTransforms(box.transforms);
-    index = (uint32_t)out.boxes.size();
-    out.boxes.push_back({inverse(worldFromObject), worldFromObject});
-    return true;
 }
 
 }  // namespace trazo

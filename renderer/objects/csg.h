@@ -1,4 +1,5 @@
-// The CSG solid object kind (host and device): ray intersection without allocation, bounds and flattening. the tree, flattened in post-order, is
+// The CSG solid object kind's kernel side (host and device; the host block: scene/kinds/csg.h): ray intersection
+// without allocation and bounds. The tree, flattened in post-order, is
 // evaluated by one sweep that keeps each sub-tree's sorted list of [entry, exit] intervals along the ray in
 // a fixed pool. Memory is bounded by the tree size: a list never holds more intervals than its sub-tree
 // has leaves, so kCsgMaxLeaves intervals plus as many for the combine step suffice.
@@ -16,7 +17,6 @@
 #include "objects/cylinder.h"
 #include "objects/scene_view.h"
 #include "objects/sphere.h"
-#include "scene/scene.h"
 
 namespace trazo {
 
@@ -246,9 +246,5 @@ inline Aabb objectBounds(const SceneView& scene, const CsgShape& csg) {
     b.grow(root.boundsMax);
     return b;
 }
-
-// Appends the solid's post-order nodes to out.csgNodes and its CsgShape to out.csgs; false for a CSG block
-// whose tree did not load (flatten/flatten_csg.cpp).
-bool appendObject(const Csg& csg, SceneArrays& out, uint32_t& index);
 
 }  // namespace trazo

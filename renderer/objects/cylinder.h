@@ -1,5 +1,5 @@
 // The cylinder object kind (host and device): a capped cylinder, its ray intersection (the side quadratic
-// plus two disks), texture frame, bounds and flattening. Texture frame: side u = angle about the axis / 2π,
+// plus two disks), texture frame and bounds (the host block: scene/kinds/cylinder.h). Texture frame: side u = angle about the axis / 2π,
 // v = height / Height; caps map the disk of radius r to the unit square, centred at (½, ½).
 #pragma once
 
@@ -14,7 +14,6 @@
 #include "geometry/shape_hit.h"
 #include "geometry/surface_frame.h"
 #include "objects/scene_view.h"
-#include "scene/scene.h"
 
 namespace trazo {
 
@@ -148,14 +147,6 @@ inline Aabb objectBounds(const SceneView&, const CylinderShape& c) {
         b.grow(centre + reach);
     }
     return b;
-}
-
-// Appends the cylinder to out.cylinders (templated on the arrays: see the sphere's appendObject).
-template <class Arrays>
-bool appendObject(const Cylinder& c, Arrays& out, uint32_t& index) {
-    index = (uint32_t)out.cylinders.size();
-    out.cylinders.push_back({c.base, normalize(c.axis), c.height, c.radius});
-    return true;
 }
 
 }  // namespace trazo

@@ -1,18 +1,18 @@
 // The triangle mesh object kind (host and device): world-space triangles in the order of the mesh's own BVH
 // (SceneView::triangles, MeshTriangle), shading data per corner beside them (kept apart so traversal touches
-// positions only), one MeshShape per Mesh block; its ray queries, surface, bounds and flattening.
+// positions only), one MeshShape per Mesh block; its ray queries, surface and bounds (the host block:
+// scene/kinds/mesh.h; flatten/flatten_mesh.h builds the arrays).
 #pragma once
 
 #include <cstdint>
 
 #include "accel/bvh_traverse.h"
-#include "accel/collapse_bvh.h"
+#include "accel/wide_bvh_node.h"
 #include "core/aabb.h"
 #include "core/vec3.h"
 #include "geometry/intersect_triangle_leaf.h"
 #include "geometry/surface_frame.h"
 #include "objects/scene_view.h"
-#include "scene/scene.h"
 
 namespace trazo {
 
@@ -112,8 +112,5 @@ TRAZO_HD bool objectHasUvs(const SceneView&, const MeshShape& mesh) { return mes
 inline Aabb objectBounds(const SceneView& scene, const MeshShape& mesh) {
     return wideNodeBounds(scene.meshNodes[mesh.nodeOffset]);
 }
-
-// Meshes have no appendObject: flatten() places them first (placeMeshes, flatten/mesh_reuse.h), building each
-// one's BVH or reusing it from an earlier flatten.
 
 }  // namespace trazo

@@ -1,10 +1,10 @@
-// ObjectRef: which kind of object (ObjectKind, scene/object_kind_list.h) an entry of the flattened scene is, and
+// ObjectRef: which kind of object (ObjectKind, objects/object_kind_list.h) an entry of the flattened scene is, and
 // where its shape and material are (host and device).
 #pragma once
 
 #include <cstdint>
 
-#include "scene/object_kind_list.h"
+#include "objects/object_kind_list.h"
 
 namespace trazo {
 

@@ -26,7 +26,7 @@ struct AreaLightData;
 struct TextureData;
 struct SceneArrays;  // flatten/scene_arrays.h: the owning host copy
 
-// Every array of the flattened scene, once: the object kinds' shape arrays (scene/object_kind_list.h), then
+// Every array of the flattened scene, once: the object kinds' shape arrays (objects/object_kind_list.h), then
 // the rest. SceneArrays, SceneView, hostView() and the backends' uploads are all generated from this list,
 // so adding an array is a one-line change. X(element type, member name, ...).
 #define TRAZO_SCENE_ARRAYS(X)           \

@@ -1,5 +1,6 @@
-// The sphere object kind (host and device): its shape, ray intersection (the stable quadratic of Ray Tracing
-// Gems ch. 7, made exact where a huge sphere is seen from close by), texture frame, bounds and flattening.
+// The sphere object kind's kernel side (host and device): its shape, ray intersection (the stable quadratic of
+// Ray Tracing Gems ch. 7, made exact where a huge sphere is seen from close by), texture frame and bounds; the
+// host block is scene/kinds/sphere.h.
 // Texture frame: u = longitude φ/2π with φ = atan2(−z, x) about +Y, v = 1 − polar angle/π (v = 1 at the top).
 #pragma once
 
@@ -12,7 +13,6 @@
 #include "geometry/shape_hit.h"
 #include "geometry/surface_frame.h"
 #include "objects/scene_view.h"
-#include "scene/scene.h"
 
 namespace trazo {
 
@@ -140,15 +140,6 @@ TRAZO_HD bool objectHasUvs(const SceneView&, const SphereShape&) { return true; 
 
 inline Aabb objectBounds(const SceneView&, const SphereShape& s) {
     return Aabb{s.center - Vec3(s.radius), s.center + Vec3(s.radius)};
-}
-
-// Appends the sphere to out.spheres; `index`: its place there. Templated on the arrays so that this header
-// need not see SceneArrays (flatten/scene_arrays.h, which includes it).
-template <class Arrays>
-bool appendObject(const Sphere& sphere, Arrays& out, uint32_t& index) {
-    index = (uint32_t)out.spheres.size();
-    out.spheres.push_back({sphere.center, sphere.radius});
-    return true;
 }
 
 }  // namespace trazo

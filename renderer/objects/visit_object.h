@@ -1,5 +1,5 @@
 // visitObject: the one dispatch over object kinds (host and device), and the one place that includes every
-// kind's header (a new kind adds its line here and in scene/object_kind_list.h). It calls f with the object's shape,
+// kind's header (a new kind adds its line here and in objects/object_kind_list.h). It calls f with the object's shape,
 // and overloads of each kind's interface (objects/<kind>.h: intersectObject, objectBlocks, objectSurface,
 // objectHasUvs, objectBounds) do the rest, as pbrt-v4's TaggedPointer::Dispatch does; no virtual calls.
 #pragma once

@@ -1,7 +1,7 @@
 // Block tables (host): one table of parameter rows per scene and CSG block, as SPEC.md §3–§4 lists them. They
 // drive the readers, the scene writer, the viewer's edit widgets, the "did you mean" hints, and a test that
 // compares them with SPEC.md. Adding a parameter is one struct field (scene.h) and one row (scene_tables.cpp);
-// a Material parameter is one row of scene/material_fields.h's list.
+// a Material parameter is one row of shading/material_fields.h's list.
 #pragma once
 
 #include <array>
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "scene/did_you_mean.h"
-#include "scene/object_kind_list.h"
+#include "objects/object_kind_list.h"
 #include "scene/param_spec.h"
 #include "scene/scene.h"
 
@@ -28,7 +28,7 @@ struct TextureDraft {
     SourceLocation nameAt, sourceAt;
 };
 
-// The texture parameters of a Material (scene/material_fields.h TRAZO_TEXTURE_SLOTS), by TextureSlot.
+// The texture parameters of a Material (shading/material_fields.h TRAZO_TEXTURE_SLOTS), by TextureSlot.
 struct TextureSlotInfo {
     std::string_view name, doc;
 };
@@ -69,7 +69,7 @@ std::span<const ParamSpec<SceneSettings>> sceneSettingsTable();
 std::span<const ParamSpec<Camera>> cameraTable();
 std::span<const ParamSpec<TextureDraft>> textureTable();
 std::span<const ParamSpec<MaterialDraft>> materialTable();
-// The table of each object kind's block (scene/object_kind_list.h): objectTable<Sphere>(), objectTable<Mesh>(), ...
+// The table of each object kind's block (objects/object_kind_list.h): objectTable<Sphere>(), objectTable<Mesh>(), ...
 template <class T>
 std::span<const ParamSpec<ObjectDraft<T>>> objectTable();
 #define TRAZO_X(Shape, array, Kind, keyword) \

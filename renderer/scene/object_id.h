@@ -4,12 +4,12 @@
 
 #include <cstdint>
 
-#include "scene/object_kind_list.h"
+#include "objects/object_kind_list.h"
 
 namespace trazo {
 
 struct ObjectId {
-    // The object kinds of scene/object_kind_list.h, then the two lights (not ObjectKinds: nothing draws them).
+    // The object kinds of objects/object_kind_list.h, then the two lights (not ObjectKinds: nothing draws them).
     enum class Kind : uint32_t {
 #define TRAZO_X(Shape, array, HostKind, keyword) HostKind,
         TRAZO_OBJECT_KINDS(TRAZO_X)

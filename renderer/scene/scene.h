@@ -8,10 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "core/affine.h"
 #include "core/vec3.h"
+#include "objects/object_kind_list.h"
 #include "scene/diagnostic.h"
-#include "scene/material_fields.h"
+#include "scene/kinds/object_kind_model.h"
+#include "scene/object_basics.h"
+#include "shading/material_fields.h"
 
 namespace trazo {
 
@@ -68,15 +70,13 @@ struct Texture {
     SourceLocation where;
 };
 
-constexpr int32_t kDefaultMaterial = -1;  // an object without `Material` uses the Material defaults
-
 constexpr std::array<int32_t, kTextureSlotCount> noTextures() {
     std::array<int32_t, kTextureSlotCount> none{};
     for (int32_t& slot : none) slot = kNoTexture;
     return none;
 }
 
-// The Material block as read (scene/material_fields.h lists its parameters and their defaults).
+// The Material block as read (shading/material_fields.h lists its parameters and their defaults).
 struct Material {
     std::string name;
 #define TRAZO_X(Type, name, fallback, ...) Type name = fallback;
@@ -92,84 +92,6 @@ struct Material {
             if (t != kNoTexture) return true;
         return false;
     }
-};
-
-// One step of an ordered transform list, kept as written (the viewer and "save scene" need it).
-struct TransformStep {
-    enum class Kind { Translation, Rotation, Scale } kind = Kind::Translation;
-    Vec3 value{0, 0, 0};  // translation, rotation axis, or scale factors
-    float angle = 0.0f;   // radians, rotations only
-};
-
-// Composes the steps in written order: later steps act on the result of earlier ones.
-Affine3 composeTransforms(const std::vector<TransformStep>& steps);
-
-struct Sphere {
-    int32_t material = kDefaultMaterial;  // index into Scene::materials
-    Vec3 center{0, 0, 0};
-    float radius = 1.0f;
-    SourceLocation where;
-};
-
-struct Box {
-    int32_t material = kDefaultMaterial;
-    std::vector<TransformStep> transforms;  // applied to the unit cube centred at the origin
-    SourceLocation where;
-};
-
-struct Cylinder {
-    int32_t material = kDefaultMaterial;
-    Vec3 base{0, 0, 0};
-    Vec3 axis{0, 1, 0};
-    float height = 1.0f;
-    float radius = 1.0f;
-    SourceLocation where;
-};
-
-// A mesh as read from its OBJ file, before the Mesh block's transforms (flatten/flatten_mesh.h places it).
-struct MeshData {
-    std::vector<Vec3> positions;
-    std::vector<Vec3> normals;        // one per position-index corner, see `corners`
-    std::vector<float> uvs;           // 2 floats per uv
-    struct Corner { int32_t position, normal, uv; };  // -1 = absent
-    std::vector<Corner> corners;      // 3 per triangle, fan-triangulated
-    bool hasNormals = false;
-    bool hasUvs = false;
-};
-
-struct Mesh {
-    int32_t material = kDefaultMaterial;
-    std::string source;  // resolved path
-    std::vector<TransformStep> transforms;
-    std::shared_ptr<const MeshData> data;
-    SourceLocation where;
-};
-
-// A CSG tree from a .csg file (SPEC §4). Nodes are stored in one array; the root is `root`.
-struct CsgNode {
-    enum class Kind { Sphere, Box, Cylinder, Union, Difference, Intersection } kind = Kind::Sphere;
-    // Primitive parameters (Sphere: center/radius; Cylinder: base/axis/height/radius; Box: none).
-    Vec3 center{0, 0, 0};
-    float radius = 1.0f;
-    Vec3 base{0, 0, 0};
-    Vec3 axis{0, 1, 0};
-    float height = 1.0f;
-    std::vector<TransformStep> transforms;  // for operations: applied to the whole sub-tree
-    int32_t left = -1, right = -1;           // node indices, operations only
-    SourceLocation where;
-};
-
-struct CsgTree {
-    std::vector<CsgNode> nodes;
-    int32_t root = -1;
-};
-
-struct Csg {
-    int32_t material = kDefaultMaterial;
-    std::string source;  // resolved path
-    std::vector<TransformStep> transforms;  // [ext] placement of the whole object
-    std::shared_ptr<const CsgTree> tree;
-    SourceLocation where;
 };
 
 struct PointLight {
@@ -197,11 +119,9 @@ struct Scene {
     Camera camera;
     std::vector<Texture> textures;
     std::vector<Material> materials;  // in file order
-    std::vector<Sphere> spheres;
-    std::vector<Box> boxes;
-    std::vector<Cylinder> cylinders;
-    std::vector<Mesh> meshes;
-    std::vector<Csg> csgs;
+#define TRAZO_X(Shape, array, Kind, keyword) std::vector<Kind> array;
+    TRAZO_OBJECT_KINDS(TRAZO_X)  // spheres, boxes, ...: scene/kinds/<kind>.h
+#undef TRAZO_X
     std::vector<PointLight> pointLights;
     std::vector<AreaLight> areaLights;
 };

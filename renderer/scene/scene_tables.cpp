@@ -182,7 +182,7 @@ std::span<const ParamSpec<TextureDraft>> textureTable() {
 
 namespace {
 
-// The Material's rows: scene/material_fields.h's list, with the texture slots where the list places them.
+// The Material's rows: shading/material_fields.h's list, with the texture slots where the list places them.
 std::vector<ParamSpec<MaterialDraft>> materialRows() {
     std::vector<ParamSpec<MaterialDraft>> rows;
     auto add = [&](const ParamSpec<Material>& row) {

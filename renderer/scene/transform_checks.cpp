@@ -1,4 +1,4 @@
-// The transform checks shared by the scene reader and the viewer's editor.
+// The transform checks shared by the scene reader and the viewer's editor, and the bounds of a transformed mesh.
 #include "scene/transform_checks.h"
 
 #include <algorithm>
@@ -22,6 +22,8 @@ Aabb meshObjectBounds(const MeshData& data) {
     for (const Vec3& p : data.positions) b.grow(p);
     return b;
 }
+
+Aabb hostBounds(const Mesh& m) { return m.data ? transformedBox(meshObjectBounds(*m.data), m.transforms) : Aabb{}; }
 
 std::string invertibleProblem(const std::vector<TransformStep>& steps) {
     if (steps.empty()) return "";

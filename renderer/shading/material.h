@@ -1,5 +1,5 @@
 // MaterialData, the material as kernels read it, generated from the material's list of parameters
-// (scene/material_fields.h), with the conversions that list names and the feature bits a material implies.
+// (shading/material_fields.h), with the conversions that list names and the feature bits a material implies.
 #pragma once
 
 #include <cstdint>
@@ -8,7 +8,7 @@
 #include "core/hd.h"
 #include "core/render_settings.h"
 #include "core/vec3.h"
-#include "scene/material_fields.h"
+#include "shading/material_fields.h"
 
 namespace trazo {
 
