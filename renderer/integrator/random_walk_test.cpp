@@ -2,6 +2,7 @@
 // 10⁶ samples, α = 0.01 Šidák over the file's χ² tests), the free path's moments, and wrong samplers rejected.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>

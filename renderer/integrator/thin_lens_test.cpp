@@ -2,6 +2,7 @@
 // of confusion, and aperture 0 as the pinhole bit for bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>

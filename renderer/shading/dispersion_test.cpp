@@ -2,6 +2,7 @@
 // Abbe-number meaning of D (glTF KHR_materials_dispersion).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>

@@ -1,6 +1,7 @@
 // dielectricFresnel against closed forms, reciprocity and an independent double-precision evaluation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>

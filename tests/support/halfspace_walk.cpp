@@ -1,6 +1,7 @@
 // The half-space random-walk oracle and its H-function counterpart (halfspace_walk.h).
 #include "support/halfspace_walk.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
