@@ -112,11 +112,12 @@ inline Vec3 surfacePoint(const SceneView& view, std::mt19937& rng, Vec3& normal)
             normal = normalize(cross(t.p1 - t.p0, t.p2 - t.p0));
             return t.p0 + (t.p1 - t.p0) * b1 + (t.p2 - t.p0) * b2;
         }
-        default: {
+        case ObjectKind::Csg: {
             const CsgNodeData& root = view.csgNodes[view.csgs[o.index].firstNode + view.csgs[o.index].nodeCount - 1];
             return (root.boundsMin + root.boundsMax) * 0.5f;
         }
     }
+    TRAZO_UNREACHABLE();  // a new kind: -Wswitch names it here
 }
 
 }  // namespace test
