@@ -13,13 +13,15 @@ namespace {
 
 Scene oneSphere() {
     Scene s;
-    s.camera = Camera{Vec3(1, 2, 10), Vec3(0, 0, 0), 40.0f};
+    s.camera.pov = Vec3(1, 2, 10);
+    s.camera.poi = Vec3(0, 0, 0);
+    s.camera.fovDegrees = 40.0f;
     s.spheres.push_back(Sphere{kDefaultMaterial, Vec3(-1, 0.5f, 0), 1.0f, {}});
     return s;
 }
 
 TEST(MoveGesture, ProjectionInvertsTheRenderersRays) {
-    const Camera camera{Vec3(1, 2, 10), Vec3(0, 0, 0), 40.0f};
+    const Camera camera = oneSphere().camera;
     const CameraFrame frame = makeCameraFrame(camera.pov, camera.poi, camera.fovDegrees, 320, 200);
     const Ray ray = generateCameraRay(frame, 100.25f, 37.5f);
     const Vec3 p = ray.origin + ray.direction * 7.0f;

@@ -30,7 +30,9 @@ Scene pickScene() {
     s.settings.renderWidth = 32;
     s.settings.renderHeight = 24;
     s.settings.indirectQuality = 0;
-    s.camera = Camera{Vec3(0, 0, 10), Vec3(0, 0, 0), 45.0f};
+    s.camera.pov = Vec3(0, 0, 10);
+    s.camera.poi = Vec3(0, 0, 0);
+    s.camera.fovDegrees = 45.0f;
     s.spheres.push_back(Sphere{kDefaultMaterial, Vec3(0, 0, 0), 1.0f, {}});
     s.spheres.push_back(Sphere{kDefaultMaterial, Vec3(1.2f, 0.6f, 2.0f), 0.5f, {}});
     Box box;

@@ -1,6 +1,5 @@
 // Flattening of the host scene into the arrays kernels read, and the scene's feature mask.
 #include "flatten/flatten.h"
-
 #include "flatten/flatten_csg.h"
 #include "flatten/flatten_mesh.h"
 #include "flatten/mesh_reuse.h"
@@ -9,6 +8,7 @@
 #include "accel/collapse_bvh.h"
 #include "objects/visit_object.h"
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 
@@ -59,6 +59,19 @@ void warnIfTexturesIgnored(const Scene& scene, const Host& object, const char* k
     if constexpr (requires { object.source; }) what += " '" + object.source + "'";
     warnings.warning(object.where, what + " has no texture coordinates; the textures of material '" +
                                        scene.materials[object.material].name + "' are ignored for it");
+}
+
+// A warning at each material that asks for an effect of SPEC §6 the integrator does not draw yet (dispersion,
+// subsurface scattering): the render is the material without it.
+void warnIfEffectsNotDrawn(const Scene& scene, Diagnostics& warnings) {
+    for (const Material& m : scene.materials) {
+        if (m.dispersion > 0.0f)
+            warnings.warning(m.where, "material '" + m.name + "': Dispersion is read but not drawn yet (SPEC §6); "
+                                      "every channel refracts with RefractionIndex");
+        if (m.scatteringDistance.x > 0.0f || m.scatteringDistance.y > 0.0f || m.scatteringDistance.z > 0.0f)
+            warnings.warning(m.where, "material '" + m.name + "': ScatteringDistance is read but subsurface "
+                                      "scattering is not drawn yet (SPEC §6); the surface is shaded as without it");
+    }
 }
 
 // Texels of the textures that materials use, each stored once, and the materials' indices remapped to them.
@@ -131,6 +144,7 @@ FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
     FlattenResult result;
     SceneArrays& out = result.arrays;
     MaterialTable materials(scene);
+    warnIfEffectsNotDrawn(scene, result.warnings);
     const SceneSettings& s = scene.settings;
     placeMeshes(scene, previous, result);  // meshes first: only they write the mesh arrays
 
@@ -166,8 +180,11 @@ FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
         out.areaLights.push_back({rect, l.color, (uint32_t)l.subdivisionX, (uint32_t)l.subdivisionY});
     }
 
+    const Camera& c = scene.camera;
+    const float focus = c.focalDistance > 0.0f ? c.focalDistance : length(c.poi - c.pov);  // 0: POI is in focus
     out.settings = RenderSettings{s.backgroundColor, (uint32_t)s.reflectionQuality, (uint32_t)s.reflectionSteps,
-                                  (uint32_t)s.indirectQuality, s.colorBleeding, (uint32_t)s.antialiasing};
+                                  (uint32_t)s.indirectQuality, s.colorBleeding, (uint32_t)s.antialiasing,
+                                  c.aperture, focus, (uint32_t)std::max(c.lensQuality, 1)};
 
     FeatureMask f = 0;
     if (!out.pointLights.empty()) f |= kFeaturePointLights;

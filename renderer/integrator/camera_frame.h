@@ -1,4 +1,5 @@
-// The pinhole camera of SPEC §3 as kernels use it: vertical FOV, +Y up, pixel (0,0) top-left.
+// The pinhole camera of SPEC §3 as kernels use it: vertical FOV, +Y up, pixel (0,0) top-left. SPEC §6's lens is
+// the scene's (RenderSettings): integrator/thin_lens.h moves these rays' origins onto it.
 #pragma once
 
 #include <cmath>

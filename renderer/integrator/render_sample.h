@@ -10,6 +10,8 @@
 #include "integrator/indirect_light.h"
 #include "integrator/scattering.h"
 #include "integrator/surface.h"
+#include "integrator/thin_lens.h"
+#include "shading/fresnel.h"
 
 namespace trazo {
 
@@ -44,18 +46,61 @@ TRAZO_HD bool materialReflects(const MaterialData& m, const RenderSettings& s, u
     return materialCanReflect(m, s) && depth < s.reflectionSteps && depth < kMaxReflectionDepth;
 }
 
-// The reflected direction of this pass: the mirror direction, or one jittered stratum of the glossy cone
-// (θ uniform in [0, half-angle), φ uniform; q θ-bins × 2q φ-bins).
+// This pass's direction within the cone of `halfAngle` about `axis`: the axis itself for a cone of 0, else one
+// jittered stratum of the cone's grid (θ uniform in [0, half-angle), φ uniform; q θ-bins × 2q φ-bins). One
+// stratum per pass even with the fixed grid: the thesis's full fan at every bounce would need a stack of
+// (2q²)^ReflectionSteps rays.
+TRAZO_HD Vec3 sampleCone(Vec3 axis, float halfAngle, uint32_t quality, uint32_t grid, const StrataKey& strata,
+                         SampleStream& rng) {
+    if (halfAngle <= 0.0f) return axis;
+    const uint32_t s = strata.stratum(grid, 2 * quality * quality);
+    const float theta = (float(s % quality) + rng.next()) / float(quality) * halfAngle;
+    const float phi = (float(s / quality) + rng.next()) / float(2 * quality) * 6.28318530718f;
+    return directionInCone(axis, theta, phi);
+}
+
+// The reflected direction of this pass: the mirror direction, or a stratum of the glossy cone about it.
 TRAZO_HD Vec3 sampleReflection(const ShadingPoint& sp, Vec3 d, const MaterialData& m, uint32_t quality,
                                const StrataKey& strata, SampleStream& rng) {
-    const Vec3 mirror = reflectDirection(d, sp.n);
-    if (m.reflectionHalfAngle <= 0.0f) return mirror;
-    // One stratum per pass even with the fixed grid: the thesis's full fan at every bounce would need a stack
-    // of (2q²)^ReflectionSteps rays.
-    const uint32_t s = strata.stratum(kGridGlossy, 2 * quality * quality);
-    const float theta = (float(s % quality) + rng.next()) / float(quality) * m.reflectionHalfAngle;
-    const float phi = (float(s / quality) + rng.next()) / float(2 * quality) * 6.28318530718f;
-    return directionInCone(mirror, theta, phi);
+    return sampleCone(reflectDirection(d, sp.n), m.reflectionHalfAngle, quality, kGridGlossy, strata, rng);
+}
+
+// The transmitted direction through an interface whose normal n faces the incoming d, with η = n_in / n_out:
+// Snell's direction, or total internal reflection's mirror.
+TRAZO_HD Vec3 transmitDirection(Vec3 d, Vec3 n, float eta) {
+    Vec3 out;
+    if (!refractDirection(d, n, eta, out)) out = reflectDirection(d, n);
+    return out;
+}
+
+// With RefractionAngle > 0 (SPEC §6), a stratum of the cone about Snell's direction (total internal reflection
+// stays a mirror); false when that direction does not cross the geometric surface (normal ng, facing d too),
+// which contributes 0.
+TRAZO_HD bool sampleGlossyTransmission(Vec3 d, Vec3 n, Vec3 ng, float eta, float halfAngle, uint32_t quality,
+                                            const StrataKey& strata, SampleStream& rng, Vec3& out) {
+    if (!refractDirection(d, n, eta, out)) {
+        out = reflectDirection(d, n);
+        return true;
+    }
+    out = sampleCone(out, halfAngle, quality, kGridGlossyTransmission, strata, rng);
+    return dot(out, ng) < 0.0f;
+}
+
+// Leaving a transparent solid with Fresnel or a transmission cone (SPEC §6): F reflects back inside and 1 − F
+// leaves, one of the two with those probabilities so the stack does not grow (total internal reflection has
+// F = 1); a leaving direction of the cone that stays inside is false (contributes 0).
+TRAZO_HD bool leaveSolid(Vec3 d, Vec3 nInside, Vec3 ngOutward, const MaterialData& m, uint32_t quality,
+                              const StrataKey& strata, SampleStream& rng, Vec3& out) {
+    if (m.fresnel != 0u && rng.next() < dielectricFresnel(dot(d, nInside), m.refractionIndex, 1.0f)) {
+        out = reflectDirection(d, nInside);
+        return true;
+    }
+    if (m.refractionHalfAngle <= 0.0f) {
+        out = transmitDirection(d, nInside, m.refractionIndex);
+        return true;
+    }
+    return sampleGlossyTransmission(d, nInside, -ngOutward, m.refractionIndex, m.refractionHalfAngle, quality, strata,
+                                    rng, out);
 }
 
 // A camera ray and its intersectScene answer, when the caller traced the ray already (the CPU's tile loop traces
@@ -122,7 +167,13 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
             if (r.segments >= kMaxTransmissionSegments) continue;
             const Vec3 nInside = -surface.n;
             Vec3 out;
-            if (!refractDirection(d, nInside, m.refractionIndex, out)) out = reflectDirection(d, nInside);
+            if (m.fresnel == 0u && m.refractionHalfAngle <= 0.0f) {
+                out = transmitDirection(d, nInside, m.refractionIndex);
+            } else if (!leaveSolid(d, nInside, surface.ng, m, settings.reflectionQuality,
+                                   StrataKey{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass, r.node}, rng,
+                                   out)) {
+                continue;
+            }
             push(PendingRay{Ray{offsetRayOrigin(p, pError, surface.ng, out), out}, r.weight, r.reflectionDepth,
                             r.segments + 1u, hashCombine(r.node, kBranchRefractedOut)});
             continue;
@@ -134,20 +185,43 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         // The reflected and transmitted rays go on the stack before this point is shaded, so that nothing but
         // the colour's weight stays live across the shadow and indirect rays (on a GPU, registers decide how
         // many threads run at once).
-        const float a = kReflection && materialReflects(m, settings, r.reflectionDepth) ? m.reflectionAmount : 0.0f;
-        if (kReflection && a > 0.0f) {
+        // SPEC §6 Fresnel: the reflectance F of the interface scales the reflection (a = ReflectionAmount·F) and
+        // splits the transmitted part T into (1 − F)·T and F·R′, R′ the reflection without its Ks tint, traced
+        // as one ray with R (the same cone and strata).
+        // (F is formed where it is used, twice, rather than kept live across the reflected ray's sampling.)
+        const bool fresnel = m.fresnel != 0u;
+        float f = fresnel ? dielectricFresnel(dot(d, sp.n), 1.0f, m.refractionIndex) : 0.0f;
+        const float a = kReflection && materialReflects(m, settings, r.reflectionDepth)
+                            ? m.reflectionAmount * (fresnel ? f : 1.0f)
+                            : 0.0f;
+        const bool reflectsTransmitted = kReflection && kRefraction && fresnel && f > 0.0f && m.opacity < 1.0f &&
+                                         settings.reflectionQuality >= 1 && r.reflectionDepth < settings.reflectionSteps &&
+                                         r.reflectionDepth < kMaxReflectionDepth;
+        if (kReflection && (a > 0.0f || reflectsTransmitted)) {
             const Vec3 dir = sampleReflection(sp, d, m, settings.reflectionQuality, strata, rng);
             if (dot(dir, sp.ng) > 0.0f) {  // directions below the geometric surface contribute 0
-                push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, r.weight * m.specular * (a * m.opacity),
-                                r.reflectionDepth + 1u, 0u, hashCombine(r.node, kBranchReflected)});
+                Vec3 weight = r.weight * m.specular * (a * m.opacity);
+                if (reflectsTransmitted) weight += r.weight * (f * (1.0f - m.opacity));
+                push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, weight, r.reflectionDepth + 1u, 0u,
+                                hashCombine(r.node, kBranchReflected)});
             }
         }
         if (kRefraction && m.opacity < 1.0f && r.segments < kMaxTransmissionSegments) {
             // Entering: η = 1/n; total internal reflection is possible only when n < 1.
+            f = fresnel ? dielectricFresnel(dot(d, sp.n), 1.0f, m.refractionIndex) : 0.0f;
             Vec3 dir;
-            if (!refractDirection(d, sp.n, 1.0f / m.refractionIndex, dir)) dir = reflectDirection(d, sp.n);
-            push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, r.weight * (1.0f - m.opacity),
-                            r.reflectionDepth, r.segments + 1u, hashCombine(r.node, kBranchRefractedIn)});
+            bool crosses = true;
+            if (m.refractionHalfAngle <= 0.0f) {
+                dir = transmitDirection(d, sp.n, 1.0f / m.refractionIndex);
+            } else {
+                crosses = sampleGlossyTransmission(d, sp.n, sp.ng, 1.0f / m.refractionIndex, m.refractionHalfAngle,
+                                                   settings.reflectionQuality, strata, rng, dir);
+            }
+            if (crosses && f < 1.0f) {
+                const Vec3 weight = fresnel ? r.weight * ((1.0f - m.opacity) * (1.0f - f)) : r.weight * (1.0f - m.opacity);
+                push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, weight, r.reflectionDepth,
+                                r.segments + 1u, hashCombine(r.node, kBranchRefractedIn)});
+            }
         }
         color += r.weight * m.emissive;
         const float directWeight = (1.0f - a) * m.opacity;  // 0 for pure mirrors and clear glass: no shadow rays
@@ -158,6 +232,20 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         }
     }
     return color;
+}
+
+// The camera ray through image position (x, y): the pinhole's, or with a lens (SPEC §6) one point of a stratum
+// of its 2q² strata, a grid of its own: position j of a pass's antialiasing block takes the lens block j places
+// on, so the positions of one pass take different lens strata and each visits every one per 2q² passes.
+TRAZO_HD Ray cameraRay(const CameraFrame& camera, const RenderSettings& s, float x, float y,
+                       const StrataKey& pixelStrata, uint32_t j, SampleStream& rng) {
+    if (s.aperture == 0.0f) return generateCameraRay(camera, x, y);
+    const uint32_t q = s.lensQuality;
+    const uint32_t stratum = pixelStrata.block(kGridLens, 2u * q * q, 1u, j).stratum(0);
+    float lensX, lensY;
+    const float u1 = rng.next();
+    lensStratumPoint(stratum, q, u1, rng.next(), lensX, lensY);
+    return thinLensRay(camera, x, y, s.aperture, s.focalDistance, lensX, lensY);
 }
 
 // One sample of one pixel: the pass's block of antialiasing positions, averaged. `given` (host x86 only, else
@@ -183,7 +271,8 @@ TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uin
     for (uint32_t j = 0; j < positions.size; ++j) {
         float x, y;
         antialiasingPosition(k, positions.stratum(j), px, py, x, y);
-        color += traceCameraRay<F>(scene, generateCameraRay(frame.camera, x, y), pixelStrata, frame.blocks, rng, rays);
+        const Ray ray = cameraRay(frame.camera, scene.settings, x, y, pixelStrata, j, rng);
+        color += traceCameraRay<F>(scene, ray, pixelStrata, frame.blocks, rng, rays);
     }
     return positions.size == 1 ? color : color / float(positions.size);
 }

@@ -16,8 +16,10 @@ namespace trazo {
 // Grid identities within a shading point's key (hashCombine(node, grid)).
 constexpr uint32_t kGridGlossy = 1;
 constexpr uint32_t kGridIndirect = 2;
+constexpr uint32_t kGridGlossyTransmission = 3;
 constexpr uint32_t kGridAreaLightBase = 16;  // + light index
 constexpr uint32_t kGridAntialiasing = 0x41414141u;
+constexpr uint32_t kGridLens = 0x4c454e53u;  // the thin lens's rings × sectors (SPEC §6)
 
 // The pixel's sample tree: the camera ray is its root, and each ray a shading point sends on (or the points Q
 // its indirect rays find) is the child node hashCombine(node, branch), so every ray's grids draw their own strata.

@@ -14,6 +14,11 @@ namespace trazo {
 
 namespace {
 
+// The camera lens's strata (SPEC §6): 2q², one a pass at each antialiasing position; 1 for a pinhole.
+uint64_t lensStrata(const RenderSettings& s) {
+    return s.aperture > 0.0f ? 2 * (uint64_t)s.lensQuality * s.lensQuality : 1u;
+}
+
 // The lcm of the passes of the grids on the camera path, and with atIndirect of the grids at indirect hits.
 uint32_t cyclePasses(const SceneArrays& a, const StrataBlocks& blocks, bool atIndirect) {
     uint64_t cycle = 1;
@@ -31,6 +36,7 @@ uint32_t cyclePasses(const SceneArrays& a, const StrataBlocks& blocks, bool atIn
     }
     const uint64_t q = a.settings.reflectionQuality;
     if ((a.features & kFeatureGlossy) && q > 0) include(2 * q * q, 1u);
+    include(lensStrata(a.settings), 1u);
     const uint64_t qi = a.settings.indirectQuality;
     if (indirect) include(2 * qi * qi, blocks.indirect);
     return (uint32_t)cycle;
@@ -50,8 +56,10 @@ uint32_t cameraPathPasses(const SceneArrays& a, const StrataBlocks& blocks) { re
 // in time × variance on scene 9 (the fan spends 25 shadow rays where the direction's own variance dominates).
 StrataBlocks headlessBlocks(const SceneArrays& a) {
     const uint64_t q = a.settings.reflectionQuality;
+    // The grids that take one stratum a pass, glossy cones and the camera's lens, cycle in `unblocked` passes.
+    const uint64_t glossy = (a.features & kFeatureGlossy) && q > 0 ? 2 * q * q : 1u;
     const uint32_t unblocked =
-        (a.features & kFeatureGlossy) && q > 0 ? (uint32_t)std::min<uint64_t>(2 * q * q, kMaxCyclePasses) : 1u;
+        (uint32_t)std::min<uint64_t>(std::lcm(glossy, uint64_t(lensStrata(a.settings))), kMaxCyclePasses);
     auto completingIn = [&](uint64_t count) {  // the block that completes a grid of `count` in `unblocked` passes
         if (count == 0 || count > UINT32_MAX) return 1u;
         return (uint32_t)(count / std::gcd(count, (uint64_t)unblocked));
@@ -99,6 +107,7 @@ bool checkRenderBounds(const Scene& scene, Diagnostics& diags) {
     };
     quality("ReflectionQuality", s.reflectionQuality, s.reflectionQualityAt);
     quality("IndirectQuality", s.indirectQuality, s.indirectQualityAt);
+    quality("LensQuality", scene.camera.lensQuality, scene.camera.lensQualityAt);
     if ((uint64_t)std::max(s.reflectionSteps, 0) > kMaxReflectionSteps) {
         diags.error(firstGiven({&s.reflectionStepsAt, &s.where}, scene.path),
                     "ReflectionSteps " + std::to_string(s.reflectionSteps) + " is more than the " +

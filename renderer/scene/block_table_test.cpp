@@ -25,11 +25,12 @@ std::string readAll(const std::string& path) {
     return s.str();
 }
 
+// From `start` to `end`, or to the end of the text when no `end` follows (the last section).
 std::string section(const std::string& spec, const std::string& start, const std::string& end) {
     const size_t a = spec.find(start);
-    const size_t b = spec.find(end, a == std::string::npos ? 0 : a);
-    if (a == std::string::npos || b == std::string::npos) return {};
-    return spec.substr(a, b - a);
+    if (a == std::string::npos) return {};
+    const size_t b = spec.find(end, a);
+    return spec.substr(a, b == std::string::npos ? std::string::npos : b - a);
 }
 
 // What SPEC says about one parameter: "—" (required), a bracketed default, or "" (none).
@@ -82,6 +83,26 @@ std::map<std::string, std::vector<SpecParam>> specBlocks(const std::string& text
     return blocks;
 }
 
+// §6 adds parameters to §3's blocks in lines like "- **Fresnel** (Material): `Fresnel` 0|1 [0]. More text.":
+// the first sentence's backticked names, once parenthesised remarks (which may quote other names) are dropped.
+std::map<std::string, std::vector<SpecParam>> specFutureWork(const std::string& text) {
+    std::map<std::string, std::vector<SpecParam>> blocks;
+    static const std::regex kItem(R"(^- \*\*[^*]+\*\* \((\w+)\): (.*)$)");
+    static const std::regex kRemark(R"( \([^()]*\))");
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+        std::smatch m;
+        if (!std::regex_match(line, m, kItem)) continue;
+        const std::string block = m[1].str();
+        const std::string paragraph = "**" + block + "** — " + std::regex_replace(m[2].str(), kRemark, "");
+        const auto parsed = specBlocks(paragraph);
+        if (const auto it = parsed.find(block); it != parsed.end())
+            blocks[block].insert(blocks[block].end(), it->second.begin(), it->second.end());
+    }
+    return blocks;
+}
+
 // As the reader stores them: floats. The tables' default texts are scene.h's float initialisers written with
 // %.9g ("0.899999976"), SPEC's are decimal ("0.9"); both read to the same float.
 std::vector<float> numbers(const std::string& s) {
@@ -95,8 +116,12 @@ std::vector<float> numbers(const std::string& s) {
 void expectTablesMatch(const std::string& specPath) {
     const std::string spec = readAll(specPath);
     ASSERT_FALSE(spec.empty()) << specPath;
-    const auto blocks = specBlocks(section(spec, "## 3. Blocks", "## 4."));
+    auto blocks = specBlocks(section(spec, "## 3. Blocks", "## 4."));
     ASSERT_EQ(blocks.size(), sceneBlocks().size()) << "SPEC §3 and the table list different blocks";
+    for (const auto& [block, params] : specFutureWork(section(spec, "## 6.", "\n## 7."))) {
+        ASSERT_TRUE(blocks.count(block)) << "§6 adds to a block §3 does not have: " << block;
+        blocks[block].insert(blocks[block].end(), params.begin(), params.end());
+    }
     for (const BlockInfo& table : sceneBlocks()) {
         const std::string block(table.name);
         const auto it = blocks.find(block);
@@ -159,6 +184,14 @@ TEST(BlockTable, SpecParserReadsTheExpectedShapes) {
     EXPECT_EQ(blocks.at("Texture").at(0).defaultText, "—");
     EXPECT_EQ(blocks.at("Mesh").size(), 5u);
     EXPECT_EQ(blocks.at("Material").size(), 13u);
+    const auto added = specFutureWork(section(readAll(kDocsSpec), "## 6.", "\n## 7."));
+    ASSERT_TRUE(added.count("Camera") && added.count("Material"));
+    ASSERT_EQ(added.at("Camera").size(), 3u);
+    EXPECT_EQ(added.at("Camera").at(1).name, "FocalDistance");
+    EXPECT_EQ(added.at("Camera").at(2).defaultText, "3");
+    ASSERT_EQ(added.at("Material").size(), 4u);  // Fresnel, RefractionAngle, Dispersion, ScatteringDistance
+    EXPECT_EQ(added.at("Material").at(2).name, "Dispersion");
+    EXPECT_EQ(added.at("Material").at(3).defaultText, "0 0 0");
 }
 
 TEST(BlockTable, EveryTableNameIsUniqueAndDocumented) {

@@ -94,6 +94,16 @@ bool checkRange(const ParamInfo& info, const ParameterLine& line, size_t offset,
                     return diags.error(at(i), name + " must be between 0 and 180 degrees, got " + text(i)), false;
                 }
                 break;
+            case C::Flag:
+                if (x != 0 && x != 1) return diags.error(at(i), name + " must be 0 or 1, got " + text(i)), false;
+                break;
+            case C::Dispersion:
+                if (x < 0 || x > kMaxDispersion) {
+                    return diags.error(at(i), name + " must be between 0 and 20 (an Abbe number of at least 1), got " +
+                                                  text(i)),
+                           false;
+                }
+                break;
             case C::Radius:
                 if (!(x > 0)) return diags.error(at(i), name + " must be positive, got " + text(i)), false;
                 if (float(x) > kMaxRadius) {  // as stored: "1e19" is kMaxRadius
@@ -246,6 +256,8 @@ ValueRange editRange(const ParamInfo& info) {
         case C::UnitInterval: return {0, 1};
         case C::FieldOfView: return {abovePositive, double(std::nextafter(180.0f, 0.0f))};
         case C::ConeAngle: return {0, 180};
+        case C::Flag: return {0, 1};
+        case C::Dispersion: return {0, kMaxDispersion};
         case C::StrataQuality: return {0, kMaxStrataQuality};
         case C::ReflectionDepth: return {0, double(kMaxReflectionSteps)};
         case C::GridCells: return {1, kMaxGridSide};

@@ -30,6 +30,8 @@ enum class ValueCheck {
     UnitInterval,       // 0 … 1 (Opacity, ReflectionAmount)
     FieldOfView,        // strictly between 0 and 180 degrees
     ConeAngle,          // 0 … 180 degrees (ReflectionAngle is the full cone angle)
+    Flag,               // 0 or 1 (Fresnel)
+    Dispersion,         // 0 … kMaxDispersion
     // Bounded where the render is sized (checkRenderBounds); read as NonNegative / Positive.
     StrataQuality,      // q: 0 … kMaxStrataQuality (2·q² strata)
     ReflectionDepth,    // 0 … kMaxReflectionSteps
@@ -48,6 +50,10 @@ constexpr float kMaxLightCoordinate = 1e18f;
 // A light's colour times a material's (1e24), times the Cook–Torrance peak (≤ 3.2e3) and 2^24 samples
 // summed in float (2^20 strata × 16 antialiasing positions), is 5.4e34: four decades inside float.
 constexpr float kMaxColour = 1e12f;
+
+// Dispersion D = 20/V (V the Abbe number): 20 is V = 1, far past any glass (dense flint V ≈ 30, D ≈ 0.7).
+// Within it every channel's index (SPEC §6) stays below twice RefractionIndex (blue's factor is 1 + 0.92·D/20).
+constexpr float kMaxDispersion = 20.0f;
 
 // How the viewer shows a Real parameter (its widget); the reader treats them all as numbers.
 enum class ValueUnit { None, Color, Degrees, Radians };

@@ -54,6 +54,12 @@ struct Camera {
     Vec3 pov{0, 0, 10};
     Vec3 poi{0, 0, 0};
     float fovDegrees = 45.0f;  // vertical
+    // Depth of field (SPEC §6): the lens's radius (0: the pinhole of §5), the distance in focus (0: |POI − POV|),
+    // and q of its q rings × 2q sectors of strata.
+    float aperture = 0.0f;
+    float focalDistance = 0.0f;
+    int lensQuality = 3;
+    SourceLocation lensQualityAt;  // bounded at render time (checkRenderBounds)
 };
 
 // An image decoded by FreeImage into linear float RGB (texel values as stored, no sRGB decoding).

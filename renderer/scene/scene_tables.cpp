@@ -166,6 +166,10 @@ std::span<const ParamSpec<Camera>> cameraTable() {
         field("POV", &Camera::pov, "camera position"),
         field("POI", &Camera::poi, "point looked at"),
         field("FOV", &Camera::fovDegrees, "vertical field of view in degrees", Check::FieldOfView, ValueUnit::Degrees),
+        field("Aperture", &Camera::aperture, "lens radius for depth of field; 0 = pinhole", Check::NonNegative),
+        field("FocalDistance", &Camera::focalDistance, "distance in focus; 0 = the distance to POI", Check::NonNegative),
+        field("LensQuality", &Camera::lensQuality, "q: q rings × 2q sectors of lens strata", Check::StrataQuality,
+              ValueUnit::None, &Camera::lensQualityAt),
     });
     return rows;
 }

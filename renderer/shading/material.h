@@ -12,11 +12,11 @@
 
 namespace trazo {
 
-
-// The conversions a row names: the kernel takes the glossy cone as its half-angle in radians.
+// The conversions a row names: the kernel takes the glossy cones as half-angles in radians, a flag as 0 or 1.
 TRAZO_HD constexpr Vec3 sameValue(Vec3 v) { return v; }
 TRAZO_HD constexpr float sameValue(float v) { return v; }
 TRAZO_HD constexpr float halfAngleRadians(float fullDegrees) { return 0.5f * fullDegrees * (3.14159265358979f / 180.0f); }
+TRAZO_HD constexpr uint32_t flagValue(int v) { return v != 0 ? 1u : 0u; }
 
 struct MaterialData {
 #define TRAZO_X(HostType, hostName, fallback, Type, name, ...) Type name;
@@ -45,8 +45,13 @@ inline FeatureMask materialFeatures(const MaterialData& m, const RenderSettings&
     FeatureMask f = 0;
     const bool reflects = materialCanReflect(m, s);
     if (reflects) f |= kFeatureReflection;
-    if (reflects && m.reflectionHalfAngle > 0.0f) f |= kFeatureGlossy;
     if (m.opacity < 1.0f) f |= kFeatureRefraction;
+    // SPEC §6: Fresnel glass reflects whatever its Ks and ReflectionAmount; a glossy transmission cone cycles
+    // its strata as a glossy reflection's do.
+    const bool reflectsTransmitted = m.fresnel != 0u && m.opacity < 1.0f && s.reflectionQuality >= 1 && s.reflectionSteps >= 1;
+    if (reflectsTransmitted) f |= kFeatureReflection;
+    if ((reflects || reflectsTransmitted) && m.reflectionHalfAngle > 0.0f) f |= kFeatureGlossy;
+    if (m.opacity < 1.0f && m.refractionHalfAngle > 0.0f) f |= kFeatureGlossy;
     if (!isBlack(m.emissive)) f |= kFeatureEmissive;
     if (materialHasTextures(m)) f |= kFeatureTextures;
     return f;

@@ -28,7 +28,15 @@ namespace trazo {
     X(float, reflectionAngleDegrees, 0.0f, float, reflectionHalfAngle, halfAngleRadians, "ReflectionAngle",        \
       ConeAngle, Degrees, "full cone angle of glossy reflections in degrees; 0 = mirror")                           \
     X(float, reflectionAmount, 0.0f, float, reflectionAmount, sameValue, "ReflectionAmount", UnitInterval, None,   \
-      "blend between lit colour (0) and reflection (1)")
+      "blend between lit colour (0) and reflection (1)")                                                            \
+    X(int, fresnel, 0, uint32_t, fresnel, flagValue, "Fresnel", Flag, None,                                        \
+      "1: the dielectric Fresnel factor splits reflection and transmission")                                        \
+    X(float, refractionAngleDegrees, 0.0f, float, refractionHalfAngle, halfAngleRadians, "RefractionAngle",        \
+      ConeAngle, Degrees, "full cone angle of glossy transmission in degrees; 0 = sharp refraction")                \
+    X(float, dispersion, 0.0f, float, dispersion, sameValue, "Dispersion", Dispersion, None,                       \
+      "20 / Abbe number: each colour channel refracts with its own index; 0 = none")                                \
+    X(Vec3, scatteringDistance, (Vec3{0.0f, 0.0f, 0.0f}), Vec3, scatteringDistance, sameValue,                     \
+      "ScatteringDistance", NonNegative, None, "mean free path per channel (subsurface scattering); 0 = off")
 
 // X(slot, keyword, doc): the material's textures, each an index into the scene's textures or kNoTexture.
 #define TRAZO_TEXTURE_SLOTS(X)                                               \

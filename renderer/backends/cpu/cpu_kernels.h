@@ -43,10 +43,11 @@ const CameraPacketKernels& cameraPacketKernelsAvx2();
 const CameraPacketKernels& cameraPacketKernelsAvx512();
 
 // Whether a scene's camera rays are traced in packets: one camera ray per pixel and pass (renderSample's given
-// hits are then one per pixel), and no meshes or CSG solids, whose rays would all be traced again.
+// hits are then one per pixel), from one origin (a pinhole: a lens gives each ray its own), and no meshes or
+// CSG solids, whose rays would all be traced again.
 inline bool cameraPacketsApply(const SceneView& scene) {
-    return antialiasingSide(scene.settings.antialiasing) == 1 && scene.topNodes.count > 0 && scene.meshes.count == 0 &&
-           scene.csgs.count == 0;
+    return antialiasingSide(scene.settings.antialiasing) == 1 && scene.settings.aperture == 0.0f &&
+           scene.topNodes.count > 0 && scene.meshes.count == 0 && scene.csgs.count == 0;
 }
 
 struct CpuKernels {
