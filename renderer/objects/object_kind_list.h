@@ -1,7 +1,8 @@
 // The object kinds of the scene language, listed once (host and device). The list generates ObjectKind, the
-// shape arrays of SceneView and SceneArrays, visitObject's dispatch, flatten()'s loop over the host scene, and
-// the reader's, writer's and tables' handling of each kind's block; each kind's kernel code lives in its own
-// header (objects/<kind>.h). X(device shape type, array in Scene and SceneView, host struct in scene.h, block
+// kinds' arrays of Scene, SceneView and SceneArrays, visitObject's dispatch, flatten()'s loop over the host
+// scene, the reader's, writer's, tables' and editor's handling of each kind's block, and the checks that each
+// kind has its two halves: the kernel half objects/<kind>.h, the host half scene/kinds/<kind>.h
+// (scene/kinds/object_kind_model.h). X(device shape type, array in Scene and SceneView, host struct, block
 // keyword in a scene file).
 #pragma once
 
