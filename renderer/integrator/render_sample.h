@@ -77,7 +77,7 @@ TRAZO_HD Vec3 transmitDirection(Vec3 d, Vec3 n, float eta) {
 // stays a mirror); false when that direction does not cross the geometric surface (normal ng, facing d too),
 // which contributes 0.
 TRAZO_HD bool sampleGlossyTransmission(Vec3 d, Vec3 n, Vec3 ng, float eta, float halfAngle, uint32_t quality,
-                                            const StrataKey& strata, SampleStream& rng, Vec3& out) {
+                                       const StrataKey& strata, SampleStream& rng, Vec3& out) {
     if (!refractDirection(d, n, eta, out)) {
         out = reflectDirection(d, n);
         return true;
@@ -90,7 +90,7 @@ TRAZO_HD bool sampleGlossyTransmission(Vec3 d, Vec3 n, Vec3 ng, float eta, float
 // leaves, one of the two with those probabilities so the stack does not grow (total internal reflection has
 // F = 1); a leaving direction of the cone that stays inside is false (contributes 0).
 TRAZO_HD bool leaveSolid(Vec3 d, Vec3 nInside, Vec3 ngOutward, const MaterialData& m, uint32_t quality,
-                              const StrataKey& strata, SampleStream& rng, Vec3& out) {
+                         const StrataKey& strata, SampleStream& rng, Vec3& out) {
     if (m.fresnel != 0u && rng.next() < dielectricFresnel(dot(d, nInside), m.refractionIndex, 1.0f)) {
         out = reflectDirection(d, nInside);
         return true;
