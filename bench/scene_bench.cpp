@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
                 relative = rmse / (mean / image.size());
             }
             SceneArrays oracleArrays = flat.arrays;
-            oracleArrays.features |= kSpecialisedFeatures;
+            oracleArrays.features |= kAllSampleFeatures;
             RenderOutcome oracle;
             backend->upload(oracleArrays);
             render(*backend, scene, blocks, cycle, 1, oracle);

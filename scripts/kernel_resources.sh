@@ -15,6 +15,9 @@
 #   a halved warp count would not. (640 until SPEC §6's thin lens took 16 more in the four indirect variants
 #   with reflection or refraction: 620–628 → 636–644 bytes. Kept in RenderSettings rather than the per-pass
 #   CameraFrame, whose growth cost 52; a called-not-inlined lens cost more through the call's saves.)
+#   ≤ 704 bytes in the 17th variant, every feature with SPEC §6's dispersion and subsurface scattering (660
+#   at its introduction: 16 over the indirect variant with reflection and refraction, for the dispersing ray's
+#   channel and the walk's state); only scenes that use those two effects run it.
 # - stack ≤ 1536 bytes + the spill slots + the pending-ray stack (kMaxPendingRays × 44 bytes = 1408) where
 #   reflection or refraction is compiled in. The frame is reserved for every thread the device can hold, but
 #   only what a thread touches costs bandwidth: a few pending rays and a traversal stack as deep as the BVH.
@@ -56,10 +59,11 @@ table=$(while read -r mangled regs stack stores loads; do
   perWarp=$(( (regs * 32 + 255) / 256 * 256 ))
   warps=$(( 65536 / perWarp )); (( warps > 64 )) && warps=64
   warps=$(( warps / (block / 32) * (block / 32) ))
-  # Feature bits (core/feature_mask.h): 2 area lights, 4 reflection, 16 refraction, 64 indirect.
+  # Feature bits (core/feature_mask.h): 2 area lights, 4 reflection, 16 refraction, 64 indirect, 1024
+  # dispersion, 2048 subsurface.
   features=0
   [[ $kernel =~ \<([0-9]+)u?\> ]] && features=${BASH_REMATCH[1]}
-  spillBudget=256; (( features & 64 )) && spillBudget=656
+  spillBudget=256; (( features & 64 )) && spillBudget=656; (( features & (1024 | 2048) )) && spillBudget=704
   stackBudget=$(( 1536 + (stores + 15) / 16 * 16 ))  # spill slots take whole 16-byte steps of the frame
   (( features & (4 | 16) )) && stackBudget=$(( stackBudget + 1408 ))
   verdict=ok

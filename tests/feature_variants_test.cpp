@@ -50,6 +50,10 @@ TEST(FeatureVariants, SceneFeaturesPickTheMatchingInstance) {
     EXPECT_EQ(variantFeatures(variantOf("scene1_area.scene")), kFeatureAreaLights);
     EXPECT_EQ(variantFeatures(variantOf("scene4_reflect.scene")), kFeatureAreaLights | kFeatureReflection);
     EXPECT_EQ(variantFeatures(variantOf("scene7_refract.scene")), kFeatureAreaLights | kFeatureRefraction);
+    // SPEC §6's dispersion and subsurface scattering share the one instance with every feature on.
+    EXPECT_EQ(variantOf("effect_dispersion.scene"), kAllFeaturesVariant);
+    EXPECT_EQ(variantOf("effect_subsurface.scene"), kAllFeaturesVariant);
+    EXPECT_EQ(variantOf("effect_fresnel.scene"), variantOf("scene7_refract.scene") | 2u) << "Fresnel glass reflects";
 }
 
 }  // namespace

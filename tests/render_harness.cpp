@@ -23,7 +23,7 @@ RenderedImage renderScene(Scene& scene, const Diagnostics& diags, const RenderRe
     }
     if (request.editScene) request.editScene(scene);
     FlattenResult flat = flatten(scene);
-    if (request.allFeatures) flat.arrays.features |= kSpecialisedFeatures;
+    if (request.allFeatures) flat.arrays.features |= kAllSampleFeatures;
     std::string error;
     auto backend = createBackend(request.backend, request.threads, error);
     if (!backend) {

@@ -18,7 +18,9 @@ namespace trazo {
     X(kFeatureIndirect, "indirect")     /* IndirectQuality ≥ 1 and ColorBleeding > 0 */                     \
     X(kFeatureTextures, "textures")                                                                         \
     X(kFeatureMeshes, "meshes")                                                                             \
-    X(kFeatureCsg, "csg")
+    X(kFeatureCsg, "csg")                                                                                   \
+    X(kFeatureDispersion, "dispersion") /* a material with Opacity < 1 has Dispersion > 0 (SPEC §6) */      \
+    X(kFeatureSubsurface, "subsurface") /* a material has a ScatteringDistance (SPEC §6) */
 
 // Bit positions, in list order.
 enum FeatureBit : uint32_t {

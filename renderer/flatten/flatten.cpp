@@ -61,19 +61,6 @@ void warnIfTexturesIgnored(const Scene& scene, const Host& object, const char* k
                                        scene.materials[object.material].name + "' are ignored for it");
 }
 
-// A warning at each material that asks for an effect of SPEC §6 the integrator does not draw yet (dispersion,
-// subsurface scattering): the render is the material without it.
-void warnIfEffectsNotDrawn(const Scene& scene, Diagnostics& warnings) {
-    for (const Material& m : scene.materials) {
-        if (m.dispersion > 0.0f)
-            warnings.warning(m.where, "material '" + m.name + "': Dispersion is read but not drawn yet (SPEC §6); "
-                                      "every channel refracts with RefractionIndex");
-        if (m.scatteringDistance.x > 0.0f || m.scatteringDistance.y > 0.0f || m.scatteringDistance.z > 0.0f)
-            warnings.warning(m.where, "material '" + m.name + "': ScatteringDistance is read but subsurface "
-                                      "scattering is not drawn yet (SPEC §6); the surface is shaded as without it");
-    }
-}
-
 // Texels of the textures that materials use, each stored once, and the materials' indices remapped to them.
 void flattenTextures(const Scene& scene, SceneArrays& out) {
     std::vector<int32_t> remap(scene.textures.size(), -1);
@@ -144,7 +131,6 @@ FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
     FlattenResult result;
     SceneArrays& out = result.arrays;
     MaterialTable materials(scene);
-    warnIfEffectsNotDrawn(scene, result.warnings);
     const SceneSettings& s = scene.settings;
     placeMeshes(scene, previous, result);  // meshes first: only they write the mesh arrays
 

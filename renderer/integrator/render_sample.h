@@ -1,5 +1,5 @@
 // renderSample(): one sample of one pixel, (scene, frame, pixel, pass) -> RGB. The whole integrator of
-// SPEC §5, written once for the CPU backend and the CUDA kernel. The recursion of Color(depth) becomes
+// SPEC §5 and §6, written once for the CPU backend and the CUDA kernel. The recursion of Color(depth) becomes
 // an explicit, bounded stack of pending rays, each carrying the weight its colour enters the pixel with.
 // Template parameter F: the feature bits the code is specialised for (sample_variants.h); code for a
 // feature outside F is compiled out, and the all-features instance is the oracle every variant must match.
@@ -9,14 +9,19 @@
 #include "integrator/frame_params.h"
 #include "integrator/indirect_light.h"
 #include "integrator/scattering.h"
+#include "integrator/subsurface.h"
 #include "integrator/surface.h"
 #include "integrator/thin_lens.h"
+#include "shading/dispersion.h"
 #include "shading/fresnel.h"
 
 namespace trazo {
 
 constexpr int kMaxPendingRays = 32;                 // a branch that would overflow contributes 0
 constexpr uint32_t kMaxTransmissionSegments = 16;   // SPEC §5: longer chains contribute 0
+// PendingRay::segments of the last segment of a subsurface walk (SPEC §6), traced again to light the point where
+// it leaves its object as a white Lambertian surface, through the integrator's own direct-light code.
+constexpr uint32_t kSubsurfaceExit = 31;
 constexpr uint32_t kMaxReflectionDepth = (1u << 27) - 1;  // what PendingRay::reflectionDepth holds
 
 struct PendingRay {
@@ -27,7 +32,7 @@ struct PendingRay {
     uint32_t node;                  // identifies this ray in the pixel's sample tree (decorrelates its strata)
 };
 static_assert(sizeof(PendingRay) == 44, "pending rays are a GPU thread's largest array: keep them packed");
-static_assert(kMaxTransmissionSegments < 32, "PendingRay::segments has 5 bits");
+static_assert(kMaxTransmissionSegments < kSubsurfaceExit && kSubsurfaceExit < 32, "PendingRay::segments has 5 bits");
 
 // A slot of the pending-ray stack, left uninitialised: Vec3 zero-initialises its members, and zeroing every slot
 // for each camera ray cost more than the camera ray's traversal; a slot is always written before it is read.
@@ -66,41 +71,30 @@ TRAZO_HD Vec3 sampleReflection(const ShadingPoint& sp, Vec3 d, const MaterialDat
 }
 
 // The transmitted direction through an interface whose normal n faces the incoming d, with η = n_in / n_out:
-// Snell's direction, or total internal reflection's mirror.
-TRAZO_HD Vec3 transmitDirection(Vec3 d, Vec3 n, float eta) {
-    Vec3 out;
-    if (!refractDirection(d, n, eta, out)) out = reflectDirection(d, n);
-    return out;
-}
-
-// With RefractionAngle > 0 (SPEC §6), a stratum of the cone about Snell's direction (total internal reflection
-// stays a mirror); false when that direction does not cross the geometric surface (normal ng, facing d too),
-// which contributes 0.
-TRAZO_HD bool sampleGlossyTransmission(Vec3 d, Vec3 n, Vec3 ng, float eta, float halfAngle, uint32_t quality,
-                                       const StrataKey& strata, SampleStream& rng, Vec3& out) {
+// Snell's direction, or with RefractionAngle > 0 (SPEC §6) a stratum of the cone about it; total internal
+// reflection is a mirror either way. False when a direction of the cone does not cross the geometric surface
+// (normal ng, facing d too), which contributes 0.
+TRAZO_HD bool sampleTransmission(Vec3 d, Vec3 n, Vec3 ng, float eta, float halfAngle, uint32_t quality,
+                                 const StrataKey& strata, SampleStream& rng, Vec3& out) {
     if (!refractDirection(d, n, eta, out)) {
         out = reflectDirection(d, n);
         return true;
     }
+    if (halfAngle <= 0.0f) return true;
     out = sampleCone(out, halfAngle, quality, kGridGlossyTransmission, strata, rng);
     return dot(out, ng) < 0.0f;
 }
 
-// Leaving a transparent solid with Fresnel or a transmission cone (SPEC §6): F reflects back inside and 1 − F
-// leaves, one of the two with those probabilities so the stack does not grow (total internal reflection has
-// F = 1); a leaving direction of the cone that stays inside is false (contributes 0).
+// Leaving a transparent solid (η = n/1): with Fresnel (SPEC §6), F reflects back inside and 1 − F leaves, one
+// of the two with those probabilities so the stack does not grow (total internal reflection has F = 1).
 TRAZO_HD bool leaveSolid(Vec3 d, Vec3 nInside, Vec3 ngOutward, const MaterialData& m, uint32_t quality,
                          const StrataKey& strata, SampleStream& rng, Vec3& out) {
     if (m.fresnel != 0u && rng.next() < dielectricFresnel(dot(d, nInside), m.refractionIndex, 1.0f)) {
         out = reflectDirection(d, nInside);
         return true;
     }
-    if (m.refractionHalfAngle <= 0.0f) {
-        out = transmitDirection(d, nInside, m.refractionIndex);
-        return true;
-    }
-    return sampleGlossyTransmission(d, nInside, -ngOutward, m.refractionIndex, m.refractionHalfAngle, quality, strata,
-                                    rng, out);
+    return sampleTransmission(d, nInside, -ngOutward, m.refractionIndex, m.refractionHalfAngle, quality, strata, rng,
+                              out);
 }
 
 // A camera ray and its intersectScene answer, when the caller traced the ray already (the CPU's tile loop traces
@@ -142,6 +136,9 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         } else
 #endif
         found = intersectScene(scene, r.ray, INFINITY, hit);
+        constexpr bool kSubsurface = (F & kFeatureSubsurface) != 0;
+        const bool walkExit = kSubsurface && r.segments == kSubsurfaceExit;
+        if (walkExit && (!found || hit.object == kNoObject)) continue;  // the walk's exit not found again: 0
         if (!found) {
             color += r.weight * settings.background;
             continue;
@@ -152,35 +149,52 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         }
         const ObjectRef& object = scene.objects[hit.object];
         MaterialData m = scene.materials[object.material];
+        const StrataKey strata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass, r.node};
+        constexpr bool kRefraction = (F & kFeatureRefraction) != 0;
+        constexpr bool kReflection = (F & kFeatureReflection) != 0;
+        constexpr bool kIndirect = (F & kFeatureIndirect) != 0;
+        Vec3 weight = r.weight;
+        if constexpr ((F & kFeatureDispersion) != 0) {
+            // SPEC §6 dispersion: a ray that carries one channel (its weight is 0 in the others) refracts with
+            // that channel's index; at a dispersing surface a ray of several channels first picks one to carry
+            // on (the three in turn over three passes), for itself and every ray it sends on.
+            if (m.dispersion > 0.0f) {
+                int channel = soleChannel(weight);
+                if (channel < 0 && m.opacity < 1.0f) {
+                    channel = int(strata.stratum(kGridDispersionChannel, 3u));
+                    weight = heroChannelWeight(weight, uint32_t(channel));
+                }
+                if (channel >= 0) m.refractionIndex = dispersedIndex(m.refractionIndex, m.dispersion, channel);
+            }
+        }
         const Vec3 d = r.ray.direction;
         const Vec3 p = pointAt(r.ray, hit.t);
         const Vec3 pError = hitPointError(r.ray, hit.t);
         SurfacePoint surface = surfaceAt(scene, object, hit, p, materialHasTextures(m));
         applyTextures(scene, m, surface);
         const bool frontFacing = dot(d, surface.ng) < 0.0f;
+        if (walkExit) {
+            // Where a subsurface walk left the object: §6 lights it as a white Lambertian surface (Oren–Nayar
+            // with σ = 0 is exactly N·L), its normal map included; nothing else.
+            m.diffuse = Vec3(1.0f);
+            m.specular = m.emissive = m.scatteringDistance = Vec3(0.0f);
+            m.roughness = 0.0f;
+            m.opacity = 1.0f;
+            m.fresnel = 0u;
+        }
 
-        constexpr bool kRefraction = (F & kFeatureRefraction) != 0;
-        constexpr bool kReflection = (F & kFeatureReflection) != 0;
-        constexpr bool kIndirect = (F & kFeatureIndirect) != 0;
         if (kRefraction && !frontFacing && m.opacity < 1.0f) {
-            // Leaving a transparent solid: refract out (η = n/1) or reflect internally; nothing is shaded.
+            // Leaving a transparent solid: refract out or reflect internally; nothing is shaded.
             if (r.segments >= kMaxTransmissionSegments) continue;
-            const Vec3 nInside = -surface.n;
             Vec3 out;
-            if (m.fresnel == 0u && m.refractionHalfAngle <= 0.0f) {
-                out = transmitDirection(d, nInside, m.refractionIndex);
-            } else if (!leaveSolid(d, nInside, surface.ng, m, settings.reflectionQuality,
-                                   StrataKey{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass, r.node}, rng,
-                                   out)) {
-                continue;
-            }
-            push(PendingRay{Ray{offsetRayOrigin(p, pError, surface.ng, out), out}, r.weight, r.reflectionDepth,
+            if (!leaveSolid(d, -surface.n, surface.ng, m, settings.reflectionQuality, strata, rng, out)) continue;
+            push(PendingRay{Ray{offsetRayOrigin(p, pError, surface.ng, out), out}, weight, r.reflectionDepth,
                             r.segments + 1u, hashCombine(r.node, kBranchRefractedOut)});
             continue;
         }
 
-        const ShadingPoint sp = facingShadingPoint(p, pError, d, surface);
-        const StrataKey strata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass, r.node};
+        // (A walk's exit point faces the way the walk leaves: outwards, towards the lights.)
+        const ShadingPoint sp = facingShadingPoint(p, pError, walkExit ? -d : d, surface);
 
         // The reflected and transmitted rays go on the stack before this point is shaded, so that nothing but
         // the colour's weight stays live across the shadow and indirect rays (on a GPU, registers decide how
@@ -188,47 +202,54 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         // SPEC §6 Fresnel: the reflectance F of the interface scales the reflection (a = ReflectionAmount·F) and
         // splits the transmitted part T into (1 − F)·T and F·R′, R′ the reflection without its Ks tint, traced
         // as one ray with R (the same cone and strata).
-        // (F is formed where it is used, twice, rather than kept live across the reflected ray's sampling.)
         const bool fresnel = m.fresnel != 0u;
-        float f = fresnel ? dielectricFresnel(dot(d, sp.n), 1.0f, m.refractionIndex) : 0.0f;
+        const float f = fresnel ? dielectricFresnel(dot(d, sp.n), 1.0f, m.refractionIndex) : 0.0f;
+        const bool belowDepth = r.reflectionDepth < settings.reflectionSteps && r.reflectionDepth < kMaxReflectionDepth;
         const float a = kReflection && materialReflects(m, settings, r.reflectionDepth)
                             ? m.reflectionAmount * (fresnel ? f : 1.0f)
                             : 0.0f;
-        const bool reflectsTransmitted = kReflection && kRefraction && fresnel && f > 0.0f && m.opacity < 1.0f &&
-                                         settings.reflectionQuality >= 1 && r.reflectionDepth < settings.reflectionSteps &&
-                                         r.reflectionDepth < kMaxReflectionDepth;
+        const bool reflectsTransmitted =
+            kReflection && kRefraction && f > 0.0f && materialReflectsTransmitted(m, settings) && belowDepth;
         if (kReflection && (a > 0.0f || reflectsTransmitted)) {
             const Vec3 dir = sampleReflection(sp, d, m, settings.reflectionQuality, strata, rng);
             if (dot(dir, sp.ng) > 0.0f) {  // directions below the geometric surface contribute 0
-                Vec3 weight = r.weight * m.specular * (a * m.opacity);
-                if (reflectsTransmitted) weight += r.weight * (f * (1.0f - m.opacity));
-                push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, weight, r.reflectionDepth + 1u, 0u,
+                Vec3 reflected = weight * m.specular * (a * m.opacity);
+                if (reflectsTransmitted) reflected += weight * (f * (1.0f - m.opacity));
+                push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, reflected, r.reflectionDepth + 1u, 0u,
                                 hashCombine(r.node, kBranchReflected)});
             }
         }
-        if (kRefraction && m.opacity < 1.0f && r.segments < kMaxTransmissionSegments) {
+        if (kRefraction && m.opacity < 1.0f && r.segments < kMaxTransmissionSegments && f < 1.0f) {
             // Entering: η = 1/n; total internal reflection is possible only when n < 1.
-            f = fresnel ? dielectricFresnel(dot(d, sp.n), 1.0f, m.refractionIndex) : 0.0f;
             Vec3 dir;
-            bool crosses = true;
-            if (m.refractionHalfAngle <= 0.0f) {
-                dir = transmitDirection(d, sp.n, 1.0f / m.refractionIndex);
-            } else {
-                crosses = sampleGlossyTransmission(d, sp.n, sp.ng, 1.0f / m.refractionIndex, m.refractionHalfAngle,
-                                                   settings.reflectionQuality, strata, rng, dir);
-            }
-            if (crosses && f < 1.0f) {
-                const Vec3 weight = fresnel ? r.weight * ((1.0f - m.opacity) * (1.0f - f)) : r.weight * (1.0f - m.opacity);
-                push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, weight, r.reflectionDepth,
+            if (sampleTransmission(d, sp.n, sp.ng, 1.0f / m.refractionIndex, m.refractionHalfAngle,
+                                   settings.reflectionQuality, strata, rng, dir)) {
+                const Vec3 transmitted = fresnel ? weight * ((1.0f - m.opacity) * (1.0f - f)) : weight * (1.0f - m.opacity);
+                push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, transmitted, r.reflectionDepth,
                                 r.segments + 1u, hashCombine(r.node, kBranchRefractedIn)});
             }
         }
-        color += r.weight * m.emissive;
+        color += weight * m.emissive;
         const float directWeight = (1.0f - a) * m.opacity;  // 0 for pure mirrors and clear glass: no shadow rays
         if (directWeight > 0.0f) {
+            // SPEC §6 subsurface scattering: Direct(P) is the Ks·CT part of Shade at P plus S(P), the Direct of
+            // the point where P's walk leaves the object, which the walk's last segment, pushed, evaluates.
+            const Vec3 kd = m.diffuse;
+            if (kSubsurface && materialScatters(m)) {
+                Ray last;
+                Vec3 walkWeight;
+                if (subsurfaceWalk(scene, object, sp, m, rng, rays, last, walkWeight)) {
+                    push(PendingRay{last, weight * walkWeight * directWeight, r.reflectionDepth, kSubsurfaceExit,
+                                    hashCombine(r.node, kBranchSubsurface)});
+                }
+                m.diffuse = Vec3(0.0f);
+            }
             Vec3 local = directLight<F>(scene, sp, m, strata, blocks.areaLight, 0u, rng, rays);
-            if constexpr (kIndirect) local += indirectLight<F>(scene, sp, m, strata, blocks, rng, rays);
-            color += r.weight * (local * directWeight);
+            m.diffuse = kd;
+            if constexpr (kIndirect) {
+                if (!walkExit) local += indirectLight<F>(scene, sp, m, strata, blocks, rng, rays);
+            }
+            color += weight * (local * directWeight);
         }
     }
     return color;

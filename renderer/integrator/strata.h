@@ -17,6 +17,7 @@ namespace trazo {
 constexpr uint32_t kGridGlossy = 1;
 constexpr uint32_t kGridIndirect = 2;
 constexpr uint32_t kGridGlossyTransmission = 3;
+constexpr uint32_t kGridDispersionChannel = 4;  // the colour channel a dispersing ray carries on (SPEC §6)
 constexpr uint32_t kGridAreaLightBase = 16;  // + light index
 constexpr uint32_t kGridAntialiasing = 0x41414141u;
 constexpr uint32_t kGridLens = 0x4c454e53u;  // the thin lens's rings × sectors (SPEC §6)
@@ -28,6 +29,7 @@ constexpr uint32_t kBranchReflected = 1;
 constexpr uint32_t kBranchRefractedIn = 2;   // into a transparent solid
 constexpr uint32_t kBranchRefractedOut = 3;  // out of it, or reflected inside it
 constexpr uint32_t kBranchIndirect = 4;      // the points Q of the indirect rays (their own light strata)
+constexpr uint32_t kBranchSubsurface = 5;    // where a subsurface walk leaves its object (SPEC §6)
 
 constexpr uint32_t kWholeGrid = 0xffffffffu;
 

@@ -19,6 +19,15 @@ uint64_t lensStrata(const RenderSettings& s) {
     return s.aperture > 0.0f ? 2 * (uint64_t)s.lensQuality * s.lensQuality : 1u;
 }
 
+// The grids that take one stratum a pass cycle together: glossy cones (2q²), the camera's lens and a
+// dispersing ray's colour channel (SPEC §6: the three in turn).
+uint64_t unblockedPasses(const SceneArrays& a) {
+    const uint64_t q = a.settings.reflectionQuality;
+    const uint64_t glossy = (a.features & kFeatureGlossy) && q > 0 ? 2 * q * q : 1u;
+    const uint64_t channels = (a.features & kFeatureDispersion) ? 3u : 1u;
+    return std::min<uint64_t>(std::lcm(std::lcm(glossy, lensStrata(a.settings)), channels), kMaxCyclePasses);
+}
+
 // The lcm of the passes of the grids on the camera path, and with atIndirect of the grids at indirect hits.
 uint32_t cyclePasses(const SceneArrays& a, const StrataBlocks& blocks, bool atIndirect) {
     uint64_t cycle = 1;
@@ -34,9 +43,7 @@ uint32_t cyclePasses(const SceneArrays& a, const StrataBlocks& blocks, bool atIn
         include((uint64_t)l.cellsU * l.cellsV, blocks.areaLight);
         if (indirect && atIndirect) include((uint64_t)l.cellsU * l.cellsV, blocks.lightAtIndirect);
     }
-    const uint64_t q = a.settings.reflectionQuality;
-    if ((a.features & kFeatureGlossy) && q > 0) include(2 * q * q, 1u);
-    include(lensStrata(a.settings), 1u);
+    include(unblockedPasses(a), 1u);
     const uint64_t qi = a.settings.indirectQuality;
     if (indirect) include(2 * qi * qi, blocks.indirect);
     return (uint32_t)cycle;
@@ -55,11 +62,7 @@ uint32_t cameraPathPasses(const SceneArrays& a, const StrataBlocks& blocks) { re
 // direction, rotated so a pass's directions take different cells, beats the thesis's every-cell fan by 3×
 // in time × variance on scene 9 (the fan spends 25 shadow rays where the direction's own variance dominates).
 StrataBlocks headlessBlocks(const SceneArrays& a) {
-    const uint64_t q = a.settings.reflectionQuality;
-    // The grids that take one stratum a pass, glossy cones and the camera's lens, cycle in `unblocked` passes.
-    const uint64_t glossy = (a.features & kFeatureGlossy) && q > 0 ? 2 * q * q : 1u;
-    const uint32_t unblocked =
-        (uint32_t)std::min<uint64_t>(std::lcm(glossy, uint64_t(lensStrata(a.settings))), kMaxCyclePasses);
+    const uint32_t unblocked = (uint32_t)unblockedPasses(a);
     auto completingIn = [&](uint64_t count) {  // the block that completes a grid of `count` in `unblocked` passes
         if (count == 0 || count > UINT32_MAX) return 1u;
         return (uint32_t)(count / std::gcd(count, (uint64_t)unblocked));

@@ -22,4 +22,18 @@ TRAZO_HD float dispersedIndex(float n, float dispersion, int channel) {
     return dispersedIndexAt(n, dispersion, wavelengthNm);
 }
 
+// The one channel a ray's weight is non-zero in, or −1 when it has several (or none).
+TRAZO_HD int soleChannel(Vec3 w) {
+    if (w.y == 0.0f && w.z == 0.0f) return w.x != 0.0f ? 0 : -1;
+    if (w.x == 0.0f && w.z == 0.0f) return 1;
+    if (w.x == 0.0f && w.y == 0.0f) return 2;
+    return -1;
+}
+
+// The weight of a ray that carries channel c alone (the "hero" channel, one of three chosen with equal
+// frequency): 3·w_c in channel c, 0 in the others, so each channel's expectation stays w.
+TRAZO_HD Vec3 heroChannelWeight(Vec3 w, uint32_t channel) {
+    return Vec3(channel == 0u ? 3.0f * w.x : 0.0f, channel == 1u ? 3.0f * w.y : 0.0f, channel == 2u ? 3.0f * w.z : 0.0f);
+}
+
 }  // namespace trazo

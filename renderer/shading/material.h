@@ -40,18 +40,26 @@ TRAZO_HD bool materialCanReflect(const MaterialData& m, const RenderSettings& s)
            s.reflectionSteps >= 1;
 }
 
+// SPEC §6 Fresnel (b): a transparent Fresnel material reflects part of what it transmits (R′) whatever its Ks
+// and ReflectionAmount, under the settings' reflection conditions (before any depth limit).
+TRAZO_HD bool materialReflectsTransmitted(const MaterialData& m, const RenderSettings& s) {
+    return m.fresnel != 0u && m.opacity < 1.0f && s.reflectionQuality >= 1 && s.reflectionSteps >= 1;
+}
+
+// SPEC §6: a material with a ScatteringDistance is a scattering medium below its surface.
+TRAZO_HD bool materialScatters(const MaterialData& m) { return !isBlack(m.scatteringDistance); }
+
 // The feature bits (core/feature_mask.h) a scene has because one of its objects uses this material.
 inline FeatureMask materialFeatures(const MaterialData& m, const RenderSettings& s) {
     FeatureMask f = 0;
-    const bool reflects = materialCanReflect(m, s);
+    const bool reflects = materialCanReflect(m, s) || materialReflectsTransmitted(m, s);
     if (reflects) f |= kFeatureReflection;
     if (m.opacity < 1.0f) f |= kFeatureRefraction;
-    // SPEC §6: Fresnel glass reflects whatever its Ks and ReflectionAmount; a glossy transmission cone cycles
-    // its strata as a glossy reflection's do.
-    const bool reflectsTransmitted = m.fresnel != 0u && m.opacity < 1.0f && s.reflectionQuality >= 1 && s.reflectionSteps >= 1;
-    if (reflectsTransmitted) f |= kFeatureReflection;
-    if ((reflects || reflectsTransmitted) && m.reflectionHalfAngle > 0.0f) f |= kFeatureGlossy;
+    // Glossy cones, reflected or transmitted (SPEC §6), cycle their strata.
+    if (reflects && m.reflectionHalfAngle > 0.0f) f |= kFeatureGlossy;
     if (m.opacity < 1.0f && m.refractionHalfAngle > 0.0f) f |= kFeatureGlossy;
+    if (m.opacity < 1.0f && m.dispersion > 0.0f) f |= kFeatureDispersion;
+    if (materialScatters(m)) f |= kFeatureSubsurface;
     if (!isBlack(m.emissive)) f |= kFeatureEmissive;
     if (materialHasTextures(m)) f |= kFeatureTextures;
     return f;

@@ -1,5 +1,6 @@
 // The render-pass kernel (one thread per pixel, one launch per pass) and its host launcher, for the variant
-// translation units render_pass_variants_*.cu: each instantiates four of the 16 specialised variants.
+// translation units render_pass_variants_*.cu: each instantiates four of the 16 specialised variants, the
+// last one the 17th.
 #pragma once
 
 #include "backends/cuda/render_pass_launch.h"
