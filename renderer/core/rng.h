@@ -8,8 +8,10 @@
 
 namespace trazo {
 
-// A 32-bit integer hash with good avalanche (Wellons' "lowbias32" triple32 variant).
-TRAZO_HD uint32_t hashU32(uint32_t x) {
+// A 32-bit integer hash with good avalanche (Wellons' "lowbias32" triple32 variant). A template over the
+// unsigned type so that the host's SIMD lanes (integrator/packet_lanes.h) draw the same numbers from one source.
+template <typename U>
+TRAZO_HD U hashBits(U x) {
     x ^= x >> 17;
     x *= 0xed5ad4bbu;
     x ^= x >> 11;
@@ -20,7 +22,14 @@ TRAZO_HD uint32_t hashU32(uint32_t x) {
     return x;
 }
 
-TRAZO_HD uint32_t hashCombine(uint32_t h, uint32_t v) { return hashU32(h ^ (v + 0x9e3779b9u + (h << 6) + (h >> 2))); }
+// hashU32(h combined with v), v a uint32_t or lanes of them.
+template <typename U>
+TRAZO_HD U hashCombineBits(uint32_t h, U v) {
+    return hashBits<U>(h ^ (v + 0x9e3779b9u + (h << 6) + (h >> 2)));
+}
+
+TRAZO_HD uint32_t hashU32(uint32_t x) { return hashBits(x); }
+TRAZO_HD uint32_t hashCombine(uint32_t h, uint32_t v) { return hashCombineBits(h, v); }
 
 // Maps 32 random bits to [0, 1) exactly representable (24 bits of mantissa).
 TRAZO_HD float bitsToUnitFloat(uint32_t bits) { return float(bits >> 8) * (1.0f / 16777216.0f); }

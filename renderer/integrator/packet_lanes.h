@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "core/rng.h"
 #include "integrator/scene_intersect.h"
 
 namespace trazo {
@@ -92,16 +93,9 @@ inline LaneF copysign(LaneF magnitude, LaneF sign) {
 }
 inline LaneF fabs(LaneF x) { return (LaneF)((LaneI)x & ~(LaneI)splat(-0.0f)); }
 
-// SampleStream{key, dimension}.next() lane by lane (core/rng.h: hashCombine, hashU32, bitsToUnitFloat).
+// SampleStream{key, dimension}.next() lane by lane (core/rng.h: hashCombineBits, bitsToUnitFloat).
 inline LaneF unitFloats(uint32_t key, LaneU dimension) {
-    LaneU x = key ^ (dimension + 0x9e3779b9u + (key << 6) + (key >> 2));
-    x ^= x >> 17;
-    x *= 0xed5ad4bbu;
-    x ^= x >> 11;
-    x *= 0xac4c1b51u;
-    x ^= x >> 15;
-    x *= 0x31848babu;
-    x ^= x >> 14;
+    const LaneU x = hashCombineBits(key, dimension);
     return __builtin_convertvector((LaneI)(x >> 8), LaneF) * (1.0f / 16777216.0f);
 }
 
