@@ -85,8 +85,8 @@ TEST_P(RayQueries, CpuBackendMatchesBruteForce) {
     const std::unique_ptr<Backend> cpu = createCpuBackend(2);
     cpu->upload(arrays);
     std::vector<float> nearest, blocked;
-    cpu->traceRays(rays, false, nearest);
-    cpu->traceRays(rays, true, blocked);
+    traceRayDistances(*cpu, rays, RayQueryKind::Nearest, nearest);
+    traceRayDistances(*cpu, rays, RayQueryKind::Shadow, blocked);
     ASSERT_EQ(nearest.size(), rays.size());
     int hits = 0;
     for (size_t i = 0; i < rays.size(); ++i) {
@@ -112,8 +112,9 @@ TEST_P(RayQueries, CudaBackendMatchesCpu) {
     gpu->upload(arrays);
     for (const bool shadow : {false, true}) {
         std::vector<float> onCpu, onGpu;
-        cpu->traceRays(rays, shadow, onCpu);
-        gpu->traceRays(rays, shadow, onGpu);
+        const RayQueryKind kind = shadow ? RayQueryKind::Shadow : RayQueryKind::Nearest;
+        traceRayDistances(*cpu, rays, kind, onCpu);
+        traceRayDistances(*gpu, rays, kind, onGpu);
         ASSERT_EQ(onCpu.size(), onGpu.size());
         size_t flipped = 0, far = 0;
         for (size_t i = 0; i < rays.size(); ++i) {

@@ -244,7 +244,8 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
             // Kernel time only (ray upload and answer download excluded); agreement with the CPU's answers.
             std::vector<float> onGpu;
             double tg = 1e30;
-            for (int r = 0; r < opt.repeat; ++r) tg = std::min(tg, gpu->traceRays(rays, k.shadow, onGpu));
+            const RayQueryKind kind = k.shadow ? RayQueryKind::Shadow : RayQueryKind::Nearest;
+            for (int r = 0; r < opt.repeat; ++r) tg = std::min(tg, traceRayDistances(*gpu, rays, kind, onGpu));
             size_t agree = 0;
             for (size_t i = 0; i < rays.size(); ++i) agree += std::isfinite(result[i]) == std::isfinite(onGpu[i]) &&
                                                               (!k.shadow || result[i] == onGpu[i]);

@@ -20,6 +20,7 @@ public:
     virtual ~Backend() = default;
 
     virtual std::string name() const = 0;        // "cpu" or "cuda"
+    virtual bool runsOnCuda() const { return false; }  // the viewer's backend menu shows it as CUDA
     virtual std::string deviceName() const = 0;  // e.g. "2 threads" or "NVIDIA H100 80GB HBM3"
 
     // Whether this backend's kernels can render the scene; when not, says why (the CUDA kernels hold a
@@ -73,8 +74,6 @@ public:
     // viewer's picking with RayQueryKind::Object) into `out`. Returns the seconds spent tracing, without
     // copies to or from the device.
     virtual double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) = 0;
-    // Nearest (t, +inf on a miss) or shadow (1 blocked, 0 not) answers alone.
-    double traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out);
 
     // Display (the viewer): writes the current estimate, sum / count as float RGBA (alpha 1, row 0 = top),
     // into the OpenGL buffer object `glBuffer` (at least width·height·16 bytes; width × height must be the
@@ -110,9 +109,11 @@ inline void checkProbePixels(const std::vector<uint32_t>& pixels, uint32_t width
         if ((uint64_t)p >= (uint64_t)width * height) throw std::logic_error("resizeProbe: a pixel beyond the image");
 }
 
-inline double Backend::traceRays(const std::vector<RayQuery>& queries, bool shadow, std::vector<float>& out) {
+// Backend::traceRays's answers as their t alone: Nearest t (+inf on a miss) or Shadow 1 (blocked) or 0.
+inline double traceRayDistances(Backend& backend, const std::vector<RayQuery>& queries, RayQueryKind kind,
+                                std::vector<float>& out) {
     std::vector<RayAnswer> answers;
-    const double seconds = traceRays(queries, shadow ? RayQueryKind::Shadow : RayQueryKind::Nearest, answers);
+    const double seconds = backend.traceRays(queries, kind, answers);
     out.resize(answers.size());
     for (size_t i = 0; i < answers.size(); ++i) out[i] = answers[i].t;
     return seconds;
