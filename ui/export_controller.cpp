@@ -37,7 +37,7 @@ bool saveSessionImage(ViewerSession& session, const std::string& path, std::stri
         message = error;
         return false;
     }
-    message = "saved " + path + " (" + std::to_string(session.passes()) + " passes)";
+    message = "saved " + path + " (" + std::to_string(session.accumulation().passes()) + " passes)";
     return true;
 }
 

@@ -16,18 +16,19 @@ RenderInfo describeRender(ViewerSession& session, const Display& display, bool c
     info.width = session.renderWidth();
     info.height = session.renderHeight();
     if (session.previewDivisor() > 1) info.displayPath += ", preview at 1/" + std::to_string(session.previewDivisor());
-    info.passes = session.passes();
-    info.cyclePasses = session.cyclePasses();
-    info.samples = session.samples();
-    info.blocks = describeBlocks(session.blocks());
-    info.elapsedSeconds = session.renderSeconds();
+    info.passes = session.accumulation().passes();
+    info.cyclePasses = session.accumulation().cyclePasses();
+    info.samples = session.accumulation().samples();
+    info.blocks = describeBlocks(session.accumulation().blocks());
+    info.elapsedSeconds = session.accumulation().renderSeconds();
     if (info.elapsedSeconds > 0) {
         info.samplesPerSecond = info.samples * info.width * info.height / info.elapsedSeconds;
-        info.mraysPerSecond = double(session.rays()) / info.elapsedSeconds * 1e-6;
+        info.mraysPerSecond = double(session.accumulation().rays()) / info.elapsedSeconds * 1e-6;
     }
     for (const Diagnostic& d : session.flattenWarnings().items) info.unsupported.push_back(formatDiagnostic(d));
-    for (const ConvergencePoint& p : session.convergence()) info.convergence.emplace_back(p.seconds, p.relError);
-    info.targetReached = session.targetReached();
+    for (const ConvergencePoint& p : session.accumulation().convergence())
+        info.convergence.emplace_back(p.seconds, p.relError);
+    info.targetReached = session.accumulation().targetReached();
     return info;
 }
 

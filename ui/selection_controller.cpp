@@ -41,7 +41,8 @@ bool SelectionController::refreshOutline(ViewerSession& session, const Selection
         return had;
     }
     // Wait for the full-size image of the current scene (while the user drags, the outline is hidden).
-    if (session.busy() || session.dirty() != kDirtyNone || session.previewDivisor() != 1 || session.passes() == 0) {
+    if (session.busy() || session.dirty() != kDirtyNone || session.previewDivisor() != 1 ||
+        session.accumulation().passes() == 0) {
         const bool had = !outline.empty();
         outline.clear();
         return had;

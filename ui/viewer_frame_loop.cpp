@@ -38,10 +38,10 @@ ViewerApp::ViewerApp(const ViewerOptions& options, Window& window, ViewerSession
       files_(options.scenePath, !options.frames, session, editor_, exports_, state_, window) {
     state_.panelWidth = panelWidth;
     std::string device;
-    cudaBuilt_ = cudaDeviceAvailable(device) || session.backend().name() == "cuda";
+    cudaBuilt_ = cudaDeviceAvailable(device) || session.backend().runsOnCuda();
     state_.backend = runningBackend();
     state_.targetPasses = options.frames ? int(*options.frames)
-                                         : int(std::max(kDefaultTargetPasses, session.cyclePasses()));
+                                         : int(std::max(kDefaultTargetPasses, session.accumulation().cyclePasses()));
     session_.setOnBatchDone(&Window::wake);
     // Larger blocks while a pass still fits the batch budget, unless --blocks fixes them; --frames keeps one
     // stratum per pass, so its image is `--render --blocks 1 --spp N`.
@@ -63,7 +63,8 @@ int ViewerApp::run(Display& display) {
         bool imageChanged = false;
         if (!session_.busy()) {
             imageChanged = showFinishedBatch(display);
-            if (options_.frames && session_.passes() >= *options_.frames && session_.dirty() == kDirtyNone) {
+            if (options_.frames && session_.accumulation().passes() >= *options_.frames &&
+                session_.dirty() == kDirtyNone) {
                 status = finishAutomation();
                 break;
             }
@@ -152,10 +153,11 @@ void ViewerApp::updateTitle() {
 }
 
 void ViewerApp::waitForEvents() {
-    const bool finished = ((state_.targetPasses > 0 && session_.samples() >= double(state_.targetPasses)) ||
-                           session_.targetReached()) &&
+    const ProgressiveAccumulation& image = session_.accumulation();
+    const bool finished = ((state_.targetPasses > 0 && image.samples() >= double(state_.targetPasses)) ||
+                           image.targetReached()) &&
                           session_.dirty() == kDirtyNone && !screenshotPending_;
-    if (session_.busy() || (finished && session_.generation() == shownGeneration_)) {
+    if (session_.busy() || (finished && image.generation() == shownGeneration_)) {
         window_.waitEvents(settleFrames_ > 0 ? 1.0 / 60.0 : 0.5);
     } else {
         window_.pollEvents();
@@ -163,16 +165,16 @@ void ViewerApp::waitForEvents() {
 }
 
 bool ViewerApp::showFinishedBatch(Display& display) {
-    if (session_.generation() == shownGeneration_ || session_.passes() == 0) return false;
+    if (session_.accumulation().generation() == shownGeneration_ || session_.accumulation().passes() == 0) return false;
     display.update(session_.backend(), session_.width(), session_.height());
-    shownGeneration_ = session_.generation();
+    shownGeneration_ = session_.accumulation().generation();
     imageShown_ = true;
     if (session_.previewDivisor() == 1) fullImageShown_ = true;
     return true;
 }
 
 void ViewerApp::startNextBatch() {
-    if (screenshotPending_ && session_.dirty() == kDirtyNone && session_.passes() > 0 &&
+    if (screenshotPending_ && session_.dirty() == kDirtyNone && session_.accumulation().passes() > 0 &&
         session_.previewDivisor() == 1) {
         screenshotPending_ = false;
         exports_.saveScreenshot(session_, state_);
@@ -180,9 +182,9 @@ void ViewerApp::startNextBatch() {
     if (!options_.frames) choosePreview();
     const uint32_t target = state_.targetPasses > 0 ? uint32_t(state_.targetPasses) : kMaxProgressivePasses;
     if (session_.dirty() != kDirtyNone) session_.applyEdits();
-    if (session_.samples() < double(target) && !session_.targetReached()) {
+    if (session_.accumulation().samples() < double(target) && !session_.accumulation().targetReached()) {
         // The target counts one-stratum passes; a pass of a grown segment stands for several.
-        const double left = (double(target) - session_.samples()) / session_.blocksWeight();
+        const double left = (double(target) - session_.accumulation().samples()) / session_.accumulation().blocksWeight();
         const double budget = session_.passesForBudget(ViewerSession::kBatchSeconds);
         session_.startPasses(uint32_t(std::clamp(std::ceil(left), 1.0, budget)));
         stats_.batchStarted();
@@ -190,11 +192,11 @@ void ViewerApp::startNextBatch() {
 }
 
 void ViewerApp::choosePreview() {
-    const bool starting = !imageShown_ && session_.passes() == 0;
+    const bool starting = !imageShown_ && session_.accumulation().passes() == 0;
     const bool editing = lastEdit_ != Clock::time_point{} && secondsSince(lastEdit_) < kPreviewHoldSeconds;
     uint32_t divisor = 1;
     if ((starting || editing) && !screenshotPending_) {
-        const double perPixel = session_.secondsPerPixelPass();
+        const double perPixel = session_.accumulation().secondsPerPixelPass();
         const double fullPass = perPixel * session_.renderWidth() * session_.renderHeight();
         if (perPixel <= 0.0) {
             divisor = 4;  // cost unknown before the first pass: a quick quarter-size first image
@@ -228,13 +230,13 @@ int ViewerApp::finishAutomation() {
 void ViewerApp::printStats(const Display& display) {
     if (options_.quiet) return;
     session_.waitIdle();
-    const double perPass = session_.passes() ? session_.renderSeconds() / session_.passes() : 0.0;
+    const double perPass = session_.accumulation().passes() ? session_.accumulation().renderSeconds() / session_.accumulation().passes() : 0.0;
     std::fprintf(stderr, "trazo: viewer %ux%u on %s (%s), display through %s: %s; %u passes since the last reset "
                          "(%.3f s/pass, %.2f Mrays/s)\n",
                  session_.renderWidth(), session_.renderHeight(), session_.backend().name().c_str(),
                  session_.backend().deviceName().c_str(), displayPathName(display.path()),
-                 stats_.summary(Clock::now()).c_str(), session_.passes(), perPass,
-                 session_.renderSeconds() > 0 ? double(session_.rays()) / session_.renderSeconds() * 1e-6 : 0.0);
+                 stats_.summary(Clock::now()).c_str(), session_.accumulation().passes(), perPass,
+                 session_.accumulation().renderSeconds() > 0 ? double(session_.accumulation().rays()) / session_.accumulation().renderSeconds() * 1e-6 : 0.0);
 }
 
 }  // namespace trazo

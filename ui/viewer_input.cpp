@@ -144,7 +144,7 @@ void ViewerApp::markEdited(DirtyFlags dirty) {
 }
 
 BackendChoice ViewerApp::runningBackend() const {
-    return session_.backend().name() == "cuda" ? BackendChoice::Cuda : BackendChoice::Cpu;
+    return session_.backend().runsOnCuda() ? BackendChoice::Cuda : BackendChoice::Cpu;
 }
 
 void ViewerApp::switchBackend(BackendChoice choice) {

@@ -85,24 +85,11 @@ public:
     void setOnBatchDone(std::function<void()> callback) { accumulation_.setOnBatchDone(std::move(callback)); }
     const ProgressiveAccumulation& accumulation() const { return accumulation_; }
 
-    // The accumulation's state (ProgressiveAccumulation says what each means); the backend meaningful while
-    // !busy().
+    // The converging image's state (passes, samples, blocks, rays, error estimate, …: ProgressiveAccumulation
+    // says what each means) is accumulation()'s. The backend is meaningful while !busy().
     Backend& backend() { return *backend_; }
     uint32_t width() const { return width_; }  // the accumulation's size (smaller during a preview)
     uint32_t height() const { return height_; }
-    uint32_t passes() const { return accumulation_.passes(); }
-    double samples() const { return accumulation_.samples(); }
-    double blocksWeight() const { return accumulation_.blocksWeight(); }
-    const StrataBlocks& blocks() const { return accumulation_.blocks(); }
-    uint32_t cyclePasses() const { return accumulation_.cyclePasses(); }
-    uint64_t rays() const { return accumulation_.rays(); }
-    double renderSeconds() const { return accumulation_.renderSeconds(); }
-    double secondsPerPixelPass() const { return accumulation_.secondsPerPixelPass(); }
-    uint64_t generation() const { return accumulation_.generation(); }
-    const std::vector<ConvergencePoint>& convergence() const { return accumulation_.convergence(); }
-    const ErrorEstimate& errorEstimate() const { return accumulation_.errorEstimate(); }
-    double targetError() const { return accumulation_.targetError(); }
-    bool targetReached() const { return accumulation_.targetReached(); }
     std::vector<Vec3> image();  // sum / count per pixel, row 0 = top (waits for the batch)
 
 private:

@@ -233,7 +233,7 @@ TEST(ViewerSessionScene, ReplaceSceneUploadsItWholeAndTakesItsSize) {
     const Scene next = readScene("scenes/scene1_area.scene");
     session.replaceScene(next);
     EXPECT_EQ(session.renderWidth(), uint32_t(next.settings.renderWidth));
-    EXPECT_EQ(session.passes(), 0u);
+    EXPECT_EQ(session.accumulation().passes(), 0u);
     EXPECT_EQ(session.lastUpload().changed, kAllArrays);
     EXPECT_EQ(session.fileScene().spheres.size(), next.spheres.size());
     EXPECT_EQ(session.dirty(), kDirtyNone);
@@ -252,28 +252,28 @@ TEST(ViewerSessionScene, ReplaceSceneUploadsItWholeAndTakesItsSize) {
 // scene1_area's cycle is 100 passes (its 10 × 10 light): estimates come at 200, 400, ... passes.
 TEST(ViewerSessionConvergence, EstimatesAtEvenCyclesEqualEstimateError) {
     ViewerSession session(readScene("scenes/scene1_area.scene"), createCpuBackend(2), 0, 8, 8);
-    ASSERT_EQ(session.cyclePasses(), 100u);
-    EXPECT_TRUE(session.convergence().empty());
+    ASSERT_EQ(session.accumulation().cyclePasses(), 100u);
+    EXPECT_TRUE(session.accumulation().convergence().empty());
     session.renderPasses(150);  // an estimate is due: no batch crosses pass 200
-    EXPECT_TRUE(session.convergence().empty());
-    EXPECT_FALSE(session.errorEstimate().available);
+    EXPECT_TRUE(session.accumulation().convergence().empty());
+    EXPECT_FALSE(session.accumulation().errorEstimate().available);
     session.renderPasses(150);
-    EXPECT_EQ(session.passes(), 200u);
-    ASSERT_EQ(session.convergence().size(), 1u);
+    EXPECT_EQ(session.accumulation().passes(), 200u);
+    ASSERT_EQ(session.accumulation().convergence().size(), 1u);
     std::vector<AccumPixel> accum;
     session.backend().readAccumulation(accum);
     const ErrorEstimate direct = estimateError(accum);
     ASSERT_TRUE(direct.available);
-    EXPECT_EQ(session.errorEstimate().relError, direct.relError);
-    EXPECT_EQ(session.convergence()[0].relError, direct.relError);
-    EXPECT_EQ(session.convergence()[0].passes, 200u);
-    EXPECT_EQ(session.convergence()[0].seconds, session.renderSeconds());
+    EXPECT_EQ(session.accumulation().errorEstimate().relError, direct.relError);
+    EXPECT_EQ(session.accumulation().convergence()[0].relError, direct.relError);
+    EXPECT_EQ(session.accumulation().convergence()[0].passes, 200u);
+    EXPECT_EQ(session.accumulation().convergence()[0].seconds, session.accumulation().renderSeconds());
     // A reset empties the series.
     session.scene().camera.pov.x += 0.5f;
     session.markDirty(kDirtyCamera);
     session.applyEdits();
-    EXPECT_TRUE(session.convergence().empty());
-    EXPECT_FALSE(session.errorEstimate().available);
+    EXPECT_TRUE(session.accumulation().convergence().empty());
+    EXPECT_FALSE(session.accumulation().errorEstimate().available);
 }
 
 TEST(ViewerSessionConvergence, TargetErrorStopsTheBatches) {
@@ -281,22 +281,22 @@ TEST(ViewerSessionConvergence, TargetErrorStopsTheBatches) {
     session.setTargetError(1e-9);  // out of reach: passes go on past the first estimate
     session.renderPasses(200);
     session.renderPasses(10);
-    EXPECT_EQ(session.passes(), 210u);
-    EXPECT_FALSE(session.targetReached());
-    const double reached = session.errorEstimate().relError;
+    EXPECT_EQ(session.accumulation().passes(), 210u);
+    EXPECT_FALSE(session.accumulation().targetReached());
+    const double reached = session.accumulation().errorEstimate().relError;
     ASSERT_GT(reached, 0.0);
     session.setTargetError(reached * 1.01);  // the estimate in hand already meets it
-    EXPECT_TRUE(session.targetReached());
+    EXPECT_TRUE(session.accumulation().targetReached());
     session.renderPasses(10);
-    EXPECT_EQ(session.passes(), 210u);
+    EXPECT_EQ(session.accumulation().passes(), 210u);
     // After a reset, batches run until an estimate meets the target again.
     session.markDirty(kDirtyCamera);
     session.applyEdits();
-    EXPECT_FALSE(session.targetReached());
+    EXPECT_FALSE(session.accumulation().targetReached());
     session.setTargetError(10.0);
     for (int i = 0; i < 5; ++i) session.renderPasses(1000);
-    EXPECT_TRUE(session.targetReached());
-    EXPECT_EQ(session.passes(), 200u);  // stopped at the first estimate
+    EXPECT_TRUE(session.accumulation().targetReached());
+    EXPECT_EQ(session.accumulation().passes(), 200u);  // stopped at the first estimate
 }
 
 }  // namespace

@@ -79,15 +79,15 @@ TEST(ViewerSession, StartsUploadedSizedAndClear) {
     EXPECT_EQ(calls.width, 40u);
     EXPECT_EQ(calls.height, 30u);
     EXPECT_GE(calls.reset, 1);
-    EXPECT_EQ(session.passes(), 0u);
-    EXPECT_EQ(session.cyclePasses(), 100u);  // the 10×10 area light
+    EXPECT_EQ(session.accumulation().passes(), 0u);
+    EXPECT_EQ(session.accumulation().cyclePasses(), 100u);  // the 10×10 area light
 }
 
 TEST(ViewerSession, MaterialEditReuploadsAndRestarts) {
     RecordingBackend::Calls calls;
     ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
     session.renderPasses(3);
-    EXPECT_EQ(session.passes(), 3u);
+    EXPECT_EQ(session.accumulation().passes(), 3u);
     const int uploads = calls.upload, resets = calls.reset, resizes = calls.resize;
 
     session.scene().materials[1].diffuseColor = Vec3(0.2f, 0.3f, 0.4f);
@@ -96,7 +96,7 @@ TEST(ViewerSession, MaterialEditReuploadsAndRestarts) {
     EXPECT_EQ(calls.upload, uploads + 1);
     EXPECT_EQ(calls.reset, resets + 1);
     EXPECT_EQ(calls.resize, resizes);  // no reallocation for an edit
-    EXPECT_EQ(session.passes(), 0u);
+    EXPECT_EQ(session.accumulation().passes(), 0u);
     EXPECT_EQ(calls.lastUpload.materials[1].diffuse.y, 0.3f);  // the edit reached the upload
     session.applyEdits();                                            // nothing dirty: nothing done
     EXPECT_EQ(calls.upload, uploads + 1);
@@ -124,7 +124,7 @@ TEST(ViewerSession, UploadsNameTheChangedArraysAndAFailedReplaceKeepsTheScene) {
     session.renderPasses(1);  // the next batch re-sends the old scene whole (the backend may hold part of either)
     EXPECT_EQ(calls.lastChanged, kAllArrays);
     EXPECT_EQ(calls.lastUpload.spheres.size(), spheres);
-    EXPECT_EQ(session.passes(), 1u);
+    EXPECT_EQ(session.accumulation().passes(), 1u);
 }
 
 TEST(ViewerSession, CameraEditResetsWithoutUpload) {
@@ -137,7 +137,7 @@ TEST(ViewerSession, CameraEditResetsWithoutUpload) {
     session.renderPasses(1);  // applies the edit first
     EXPECT_EQ(calls.upload, uploads);
     EXPECT_EQ(calls.reset, resets + 1);
-    EXPECT_EQ(session.passes(), 1u);
+    EXPECT_EQ(session.accumulation().passes(), 1u);
     EXPECT_EQ(calls.lastFrame.camera.origin.x, 1.0f);
 }
 
@@ -153,7 +153,7 @@ TEST(ViewerSession, ResizeReallocates) {
     EXPECT_EQ(calls.width, 24u);
     EXPECT_EQ(calls.height, 12u);
     EXPECT_EQ(session.width(), 24u);
-    EXPECT_EQ(session.passes(), 0u);
+    EXPECT_EQ(session.accumulation().passes(), 0u);
     session.renderPasses(1);
     EXPECT_EQ(calls.lastFrame.camera.width, 24u);
 }
@@ -171,7 +171,7 @@ TEST(ViewerSession, PreviewRendersSmallerAndFullSizeReturns) {
     session.renderPasses(1);
     EXPECT_EQ(calls.width, 30u);
     EXPECT_EQ(calls.height, 17u);
-    EXPECT_EQ(session.passes(), 1u);
+    EXPECT_EQ(session.accumulation().passes(), 1u);
 }
 
 TEST(ViewerSession, BatchesRunOnTheWorkerAndErrorsReachTheCaller) {
@@ -182,7 +182,7 @@ TEST(ViewerSession, BatchesRunOnTheWorkerAndErrorsReachTheCaller) {
     session.startPasses(5);
     session.waitIdle();
     EXPECT_FALSE(session.busy());
-    EXPECT_EQ(session.passes(), 5u);
+    EXPECT_EQ(session.accumulation().passes(), 5u);
     EXPECT_EQ(calls.passes, 5u);
     EXPECT_EQ(done.load(), 1);
     EXPECT_GE(session.passesForBudget(1e9), 1u);
@@ -213,7 +213,7 @@ TEST(ViewerSession, BatchedPassesEqualTheHeadlessRender) {
     const Scene scene = readScene("scenes/scene1_area.scene");
     ViewerSession session(scene, createCpuBackend(2), 7, 24, 16);
     for (uint32_t batch : {1u, 2u, 5u, 3u}) session.renderPasses(batch);
-    ASSERT_EQ(session.passes(), 11u);
+    ASSERT_EQ(session.accumulation().passes(), 11u);
     const std::vector<Vec3> viewer = session.image();
 
     const std::vector<Vec3> reference = headlessImage(scene, 24, 16, 7, StrataBlocks::ones(), 11);
@@ -232,7 +232,7 @@ TEST(ViewerSession, FixedBlocksEqualTheHeadlessRender) {
     const std::vector<Vec3> reference = headlessImage(scene, 24, 16, 5, blocks, 7);
     ASSERT_EQ(viewer.size(), reference.size());
     EXPECT_EQ(std::memcmp(viewer.data(), reference.data(), viewer.size() * sizeof(Vec3)), 0);
-    EXPECT_EQ(session.samples(), 7.0);
+    EXPECT_EQ(session.accumulation().samples(), 7.0);
 }
 
 // With growth on, blocks double at cycle boundaries up to the headless render's, each segment's samples
@@ -244,18 +244,18 @@ TEST(ViewerSession, BlocksGrowAtCycleBoundariesAndKeepTheEstimate) {
     session.setBlocks(StrataBlocks::ones(), 1e9);  // any pass fits
     const StrataBlocks target = headlessBlocks(flatten(scene).arrays);
     double weightBefore = 0;
-    for (int batch = 0; batch < 20 && !(session.blocks() == target); ++batch) {
-        EXPECT_GT(session.blocksWeight(), weightBefore);
-        weightBefore = session.blocksWeight();
+    for (int batch = 0; batch < 20 && !(session.accumulation().blocks() == target); ++batch) {
+        EXPECT_GT(session.accumulation().blocksWeight(), weightBefore);
+        weightBefore = session.accumulation().blocksWeight();
         session.renderPasses(1000);  // stops at the segment's cycle end
     }
-    ASSERT_EQ(session.blocks(), target) << describeBlocks(session.blocks());
+    ASSERT_EQ(session.accumulation().blocks(), target) << describeBlocks(session.accumulation().blocks());
     session.renderPasses(1000);  // one whole-light pass: a cycle of the last segment
     // Every segment is whole cycles, each worth one cycle of one stratum per pass (100 passes' worth).
-    EXPECT_EQ(std::fmod(session.samples(), 100.0), 0.0) << session.samples();
+    EXPECT_EQ(std::fmod(session.accumulation().samples(), 100.0), 0.0) << session.accumulation().samples();
     // Light blocks 1, 2, 4, 5, 10, 25, 50, 100 (targets doubling, divisors of 100): one cycle each.
-    EXPECT_EQ(session.passes(), 100u + 50 + 25 + 20 + 10 + 4 + 2 + 1);
-    EXPECT_EQ(session.samples(), 800.0);
+    EXPECT_EQ(session.accumulation().passes(), 100u + 50 + 25 + 20 + 10 + 4 + 2 + 1);
+    EXPECT_EQ(session.accumulation().samples(), 800.0);
     const std::vector<Vec3> image = session.image();
 
     const std::vector<Vec3> reference = headlessImage(scene, 24, 16, 99, StrataBlocks::whole(), 16);

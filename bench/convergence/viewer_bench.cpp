@@ -39,7 +39,8 @@ std::vector<Reading> run(const Scene& scene, const std::vector<Vec3>& reference,
         const double t = std::chrono::duration<double>(Clock::now() - start).count();
         if (t < next) continue;
         const ReferenceError e = compareToReference(session.image(), reference);
-        out.push_back({t, e.relError, session.passes(), session.samples(), describeBlocks(session.blocks())});
+        const ProgressiveAccumulation& a = session.accumulation();
+        out.push_back({t, e.relError, a.passes(), a.samples(), describeBlocks(a.blocks())});
         next *= 2;
         if (next > seconds) break;
     }

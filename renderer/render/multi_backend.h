@@ -18,6 +18,7 @@ public:
     explicit MultiBackend(std::vector<std::unique_ptr<Backend>> backends);
 
     std::string name() const override;        // the backends' name ("cuda")
+    bool runsOnCuda() const override { return backends_[0]->runsOnCuda(); }
     std::string deviceName() const override;  // "N devices: NAME, NAME, ..."
     bool accepts(const SceneArrays& arrays, std::string& why) const override;
     void upload(const SceneArrays& arrays) override;

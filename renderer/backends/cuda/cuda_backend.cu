@@ -150,6 +150,7 @@ public:
     }
 
     std::string name() const override { return "cuda"; }
+    bool runsOnCuda() const override { return true; }
     std::string deviceName() const override { return deviceName_; }
 
     // Arrays equal to the ones already on the device are not copied again (an edited material re-sends
