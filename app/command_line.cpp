@@ -68,11 +68,11 @@ void declareOptions(CLI::App& app, CommandLine& out, OptionText& text) {
     app.add_option("--render", out.renderScene, "Render SCENE headless to a file")->type_name("SCENE");
     app.add_option("-o,--output", out.output, "Output image; format by extension (png bmp jpg tga exr hdr pfm)")
         ->capture_default_str();
-    app.add_option("--spp", out.spp, "Passes per pixel (default: one full cycle of the scene's strata)")
+    app.add_option("--spp", out.request.spp, "Passes per pixel (default: one full cycle of the scene's strata)")
         ->check(CLI::Range(1u, 1u << 24));
-    app.add_option("--time", out.seconds, "Stop after this wall time in seconds (with --spp: whichever first)")
+    app.add_option("--time", out.request.seconds, "Stop after this wall time in seconds (with --spp: whichever first)")
         ->check(CLI::PositiveNumber);
-    app.add_option("--target-error", out.targetError,
+    app.add_option("--target-error", out.request.targetError,
                    "Stop once the estimated relative RMS error of the image falls below this (e.g. 0.01)")
         ->check(CLI::Range(1e-6, 1.0));
     app.add_flag("--fixed-grid", out.fixedGrid,
@@ -87,8 +87,9 @@ void declareOptions(CLI::App& app, CommandLine& out, OptionText& text) {
         ->transform(CLI::CheckedTransformer(backends, CLI::ignore_case));
     app.add_option("--threads", out.threads, "CPU threads (default: all cores)")->check(CLI::Range(1u, 4096u));
     app.add_option("--seed", out.seed, "Random seed; the same seed gives the same image");
-    app.add_option("--width", out.width, "Override RenderWidth")->check(CLI::Range(1u, unsigned(kMaxRenderSize)));
-    app.add_option("--height", out.height, "Override RenderHeight")->check(CLI::Range(1u, unsigned(kMaxRenderSize)));
+    const CLI::Range renderSize(1u, unsigned(kMaxRenderSize));
+    app.add_option("--width", out.request.width, "Override RenderWidth")->check(renderSize);
+    app.add_option("--height", out.request.height, "Override RenderHeight")->check(renderSize);
     app.add_option("--stats", out.statsPath, "Write timings and counts as JSON to this file");
     app.add_flag("--quiet", out.quiet, "No progress bar");
     app.add_option("--frames", out.frames, "Viewer: run N passes in the window, save --screenshot, exit 0")
@@ -112,7 +113,7 @@ void declareOptions(CLI::App& app, CommandLine& out, OptionText& text) {
 // --blocks, --passes and --devices from their text into `out`; false after saying why.
 bool readOptionText(const OptionText& text, CommandLine& out) {
     if (out.fixedGrid) {
-        out.blocks = StrataBlocks::whole();
+        out.request.blocks = StrataBlocks::whole();
     } else if (text.blocks != "auto") {
         StrataBlocks parsed;
         std::string why;
@@ -120,9 +121,9 @@ bool readOptionText(const OptionText& text, CommandLine& out) {
             std::fprintf(stderr, "trazo: --blocks %s: %s\n", text.blocks.c_str(), why.c_str());
             return false;
         }
-        out.blocks = parsed;
+        out.request.blocks = parsed;
     }
-    if (!readPassesOption(text.passes, "trazo", out.passes)) return false;
+    if (!readPassesOption(text.passes, "trazo", out.request.passes)) return false;
     if (!text.devices.empty()) {
         CommandLine::DeviceList list;
         std::string why;
@@ -132,20 +133,21 @@ bool readOptionText(const OptionText& text, CommandLine& out) {
         }
         out.devices = list;
     }
+    out.request.partial = !out.partialPath.empty();
     return true;
 }
 
 // Why the options given together make no command (null when they do). `outputGiven`: -o was on the line.
 const char* conflictIn(const CommandLine& out, bool outputGiven) {
-    const bool splitRender = out.passes || !out.partialPath.empty() || out.devices;
+    const bool splitRender = out.request.passes || !out.partialPath.empty() || out.devices;
     if (!out.viewerScene.empty() && splitRender)
         return "trazo: --passes, --partial and --devices are for headless renders (`trazo --render SCENE`)\n";
-    if (out.passes && out.spp)
+    if (out.request.passes && out.request.spp)
         return "trazo: give either --spp N or --passes A:B (--spp N renders passes 0:N)\n";
     if (!out.partialPath.empty() && outputGiven)
         return "trazo: --partial writes the passes' accumulation, not an image: leave out -o (make the image "
                "with `trazo merge PARTS... -o IMAGE`)\n";
-    if ((out.passes || !out.partialPath.empty()) && out.targetError > 0)
+    if ((out.request.passes || !out.partialPath.empty()) && out.request.targetError > 0)
         return "trazo: --target-error needs the whole render's error: it cannot stop a part of one (--passes, "
                "--partial); use --spp or --time\n";
     if (out.devices && out.backend != BackendChoice::Cuda)

@@ -9,6 +9,7 @@
 #include "backends/backend.h"
 #include "integrator/strata.h"
 #include "render/pass_range.h"
+#include "render/render_plan.h"
 
 namespace trazo {
 
@@ -16,24 +17,19 @@ struct CommandLine {
     std::string renderScene;  // --render SCENE (headless)
     std::string viewerScene;  // positional SCENE (viewer)
     std::string output = "out.bmp";
-    std::optional<uint32_t> spp;
-    double seconds = 0.0;
-    double targetError = 0.0;  // --target-error: stop once the estimated relative error is below this
-    bool fixedGrid = false;    // --fixed-grid: every stratum of every grid in each pass, as the thesis did
-    // --blocks (parseStrataBlocks), or whole with --fixed-grid: the strata of each grid a pass takes. None
-    // ("auto"): the render's own choice (headlessBlocks; the viewer's growing blocks).
-    std::optional<StrataBlocks> blocks;
+    // What to render: --width, --height, --spp, --time, --target-error, --passes A:B (the same samples as those
+    // passes of --spp B), and --blocks (parseStrataBlocks; whole with --fixed-grid; none, "auto": the render's
+    // own choice, headlessBlocks, or the viewer's growing blocks). `partial` follows --partial.
+    RenderRequest request;
+    bool fixedGrid = false;  // --fixed-grid: every stratum of every grid in each pass, as the thesis did
     BackendChoice backend = BackendChoice::Auto;
     unsigned threads = 0;
     uint32_t seed = 0;
-    std::optional<uint32_t> width, height;
     std::string statsPath;
     bool quiet = false;
     std::optional<uint32_t> frames;  // viewer automation: run N passes in the window, save --screenshot, exit
     std::string screenshot;          // viewer: the automation's image, else the screenshot key's default name
-    // --passes A:B: render passes [A, B) (the same samples as those passes of --spp B). With --partial, the
-    // accumulation goes to that file instead of an image (docs/PARTIAL_FORMAT.md).
-    std::optional<PassRange> passes;
+    // --partial: the accumulation of the passes goes to this file instead of an image (docs/PARTIAL_FORMAT.md).
     std::string partialPath;
     // --devices all|0,1 (with --backend cuda): split each batch of passes over these CUDA devices.
     struct DeviceList {

@@ -145,19 +145,6 @@ int runHeadlessRender(const CommandLine& options) {
 
 namespace {
 
-RenderRequest requestOf(const CommandLine& options) {
-    RenderRequest r;
-    r.width = options.width;
-    r.height = options.height;
-    r.blocks = options.blocks;
-    r.spp = options.spp;
-    r.passes = options.passes;
-    r.seconds = options.seconds;
-    r.targetError = options.targetError;
-    r.partial = !options.partialPath.empty();
-    return r;
-}
-
 // --devices, or --backend and --threads; says which it opened. Null after saying why not.
 std::unique_ptr<Backend> openRenderBackend(const CommandLine& options, const SceneArrays& arrays, RenderStats& stats) {
     std::string fallback;
@@ -178,7 +165,7 @@ void recordOutcome(RenderStats& stats, const CommandLine& options, const RenderO
     stats.renderSeconds = outcome.seconds;
     stats.rays = outcome.rays;
     stats.fixedGrid = options.fixedGrid;
-    stats.targetError = options.targetError;
+    stats.targetError = options.request.targetError;
     stats.reachedTarget = outcome.reachedTarget;
     stats.estimatedRelError = estimate.relError;
     stats.probePixels = estimate.probePixels;
@@ -252,7 +239,7 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     FlattenResult flat = flatten(scene);
     stats.buildSeconds = secondsSince(buildStart);
     printDiagnostics(flat.warnings);
-    const RenderRequest request = requestOf(options);
+    const RenderRequest& request = options.request;
     const RenderPlan plan = planRender(request, scene, flat.arrays);
     stats.width = plan.width;
     stats.height = plan.height;
@@ -294,7 +281,7 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
         limits.stop = &stopRequested;
         stopOnSignals();
     }
-    ProgressBar bar(!options.quiet, options.seconds);
+    ProgressBar bar(!options.quiet, request.seconds);
     const FrameParams frame = makeFrameParams(scene, plan.width, plan.height, options.seed, plan.blocks);
     const RenderOutcome outcome =
         renderProgressive(*backend, frame, limits, [&](const RenderProgress& p) { bar.update(p); });

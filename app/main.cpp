@@ -25,12 +25,12 @@ int main(int argc, char** argv) {
     viewer.backend = options.backend;
     viewer.threads = options.threads;
     viewer.seed = options.seed;
-    viewer.width = options.width.value_or(0);
-    viewer.height = options.height.value_or(0);
+    viewer.width = options.request.width.value_or(0);
+    viewer.height = options.request.height.value_or(0);
     viewer.frames = options.frames;
     viewer.screenshot = options.screenshot;
     viewer.quiet = options.quiet;
-    viewer.blocks = options.blocks;
+    viewer.blocks = options.request.blocks;
     return trazo::runViewer(viewer);
 #else
     std::fprintf(stderr,
