@@ -178,6 +178,14 @@ TEST(GlossyTransmissionRender, ConeThroughAClearSlabKeepsTheLight) {
     for (const Vec3& p : image.pixels) EXPECT_EQ(p.x, 1.0f);
 }
 
+// An emitter (Ke = 1) filling the box x ∈ [0, 100], |y| ≤ 50, z ∈ [front − 1, front]: the half-plane x > 0
+// behind the object under test.
+std::string halfPlaneLamp(double front) {
+    return "Material\n{\nName lamp\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nEmissiveColor 1 1 1\n}\n"
+           "Box\n{\nMaterial lamp\nScale 100 100 1\nTranslation 50 0 " +
+           std::to_string(front - 0.5) + "\n}\n";
+}
+
 // Vectors in double for the independent traces below.
 using D3 = std::array<double, 3>;
 double dot3(const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -201,9 +209,8 @@ TEST(GlossyTransmissionRender, EdgeProfileMatchesAnIndependentTraceOfTheCones) {
         "Camera\n{\nPOV 0 0 10\nPOI 0 0 0\nFOV 2\n}\n"
         "Material\n{\nName glass\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nOpacity 0\nRefractionIndex 1\n"
         "RefractionAngle 20\n}\n"
-        "Material\n{\nName lamp\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nEmissiveColor 1 1 1\n}\n"
-        "Box\n{\nMaterial glass\nScale 100 100 0.2\n}\n"
-        "Box\n{\nMaterial lamp\nScale 100 100 1\nTranslation 50 0 -0.9\n}\n";
+        "Box\n{\nMaterial glass\nScale 100 100 0.2\n}\n" +
+        halfPlaneLamp(-0.4);
     const RenderedImage image = renderSceneText(scene, {.passes = 72});
     ASSERT_EQ(image.pixels.size(), size_t(w * h));
     const double halfAngle = 10.0 * M_PI / 180.0, t = std::tan(1.0 * M_PI / 180.0) * double(w) / double(h);
@@ -284,9 +291,8 @@ TEST(DispersionRender, EachChannelOfABallLensFollowsItsOwnIndex) {
         "Camera\n{\nPOV 0.3 0 6\nPOI 0.3 0 0\nFOV 24\n}\n"
         "Material\n{\nName glass\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nOpacity 0\nRefractionIndex 1.5\n"
         "Dispersion 4\n}\n"
-        "Material\n{\nName lamp\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nEmissiveColor 1 1 1\n}\n"
-        "Sphere\n{\nMaterial glass\nCenter 0 0 0\nRadius 1\n}\n"
-        "Box\n{\nMaterial lamp\nScale 100 100 1\nTranslation 50 0 -3.5\n}\n";
+        "Sphere\n{\nMaterial glass\nCenter 0 0 0\nRadius 1\n}\n" +
+        halfPlaneLamp(-3);
     const RenderedImage image = renderSceneText(scene, {.passes = 3});
     ASSERT_EQ(image.pixels.size(), size_t(w * h));
     const double t = std::tan(12.0 * M_PI / 180.0);
