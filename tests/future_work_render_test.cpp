@@ -196,9 +196,9 @@ D3 unit(const D3& a) {
 D3 along(const D3& o, const D3& d, double t) { return {o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t}; }
 
 // A glass slab of n = 1 (no bending; z from −0.1 to 0.1) with a 20° transmission cone (half-angle 10°) before
-// an emitting box x ∈ [0, 100], z ∈ [−1.4, −0.4], seen along −z through a 2° field: each crossing of a face takes a
-// direction in the cone about the ray's (θ uniform, φ uniform: SPEC §6), so the sharp edge of the emitter
-// spreads into a profile. Its values against an independent Monte Carlo of the two cones in double precision
+// an emitting box x ∈ [0, 100], z ∈ [−1.4, −0.4], seen along −z through a 2° field: each crossing of a face
+// takes a direction in the cone about the ray's (θ uniform, φ uniform: SPEC §6), so the sharp edge of the
+// emitter spreads into a profile. Its values against an independent Monte Carlo of the two cones in double precision
 // (10⁵ paths a column, its own generator, the middle row's ray), column by column: the render's 24 rows × 72
 // passes are 1 728 samples of 0 or 1 a column, a standard error of at most 0.012 (the rows' rays tilt by up to
 // 1° from the middle one's, which lengthens their paths by 0.015 %); the bound is 4.5 of them (and the oracle's).
@@ -278,9 +278,8 @@ double unitSphere(const D3& o, const D3& d, bool far) {
 }
 
 // A ball lens (unit sphere, n = 1.5, Dispersion 4, Opacity 0, no Fresnel) before an emitting box x ∈ [0, 100],
-// z ∈ [−4, −3]; no light, black background. Each pixel's camera ray, traced through the
-// ball in double precision with each channel's own index, lands on the emitter or not: channel c of the pixel
-// is 1 or 0. A dispersing ray carries one channel, each in turn over three passes with weight 3, so three
+// z ∈ [−4, −3]; no light, black background. Each pixel's camera ray, traced through the ball in double
+// precision with each channel's own index, lands on the emitter or not: channel c of the pixel is 1 or 0. A dispersing ray carries one channel, each in turn over three passes with weight 3, so three
 // passes give each channel exactly. Pixels whose trace lands within 1e-3 of the emitter's edge, or comes near
 // total internal reflection, are not compared.
 TEST(DispersionRender, EachChannelOfABallLensFollowsItsOwnIndex) {

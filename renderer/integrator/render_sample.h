@@ -224,7 +224,8 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
             Vec3 dir;
             if (sampleTransmission(d, sp.n, sp.ng, 1.0f / m.refractionIndex, m.refractionHalfAngle,
                                    settings.reflectionQuality, strata, rng, dir)) {
-                const Vec3 transmitted = fresnel ? weight * ((1.0f - m.opacity) * (1.0f - f)) : weight * (1.0f - m.opacity);
+                const Vec3 transmitted =
+                    fresnel ? weight * ((1.0f - m.opacity) * (1.0f - f)) : weight * (1.0f - m.opacity);
                 push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, transmitted, r.reflectionDepth,
                                 r.segments + 1u, hashCombine(r.node, kBranchRefractedIn)});
             }

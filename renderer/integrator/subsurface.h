@@ -44,7 +44,7 @@ TRAZO_HD bool subsurfaceWalk(const SceneView& scene, const ObjectRef& object, co
     Vec3 density(1.0f);  // per channel, the walk's density with that channel's free paths (relative)
     int channels = 3;    // those of a positive mean free path
     if (!grey) {
-        density = Vec3(meanPath.x > 0.0f ? 1.0f : 0.0f, meanPath.y > 0.0f ? 1.0f : 0.0f, meanPath.z > 0.0f ? 1.0f : 0.0f);
+        for (int c = 0; c < 3; ++c) density[c] = meanPath[c] > 0.0f ? 1.0f : 0.0f;
         channels = int(density.x + density.y + density.z);
         int pick = int(float(channels) * rng.next());  // the pick-th positive channel
         if (pick >= channels) pick = channels - 1;

@@ -33,7 +33,8 @@ TRAZO_HD int soleChannel(Vec3 w) {
 // The weight of a ray that carries channel c alone (the "hero" channel, one of three chosen with equal
 // frequency): 3·w_c in channel c, 0 in the others, so each channel's expectation stays w.
 TRAZO_HD Vec3 heroChannelWeight(Vec3 w, uint32_t channel) {
-    return Vec3(channel == 0u ? 3.0f * w.x : 0.0f, channel == 1u ? 3.0f * w.y : 0.0f, channel == 2u ? 3.0f * w.z : 0.0f);
+    return Vec3(channel == 0u ? 3.0f * w.x : 0.0f, channel == 1u ? 3.0f * w.y : 0.0f,
+                channel == 2u ? 3.0f * w.z : 0.0f);
 }
 
 }  // namespace trazo
