@@ -11,7 +11,7 @@
 # What it does:
 #   1. configures and builds a CUDA-enabled sm_90 (H100/H200) Release build in build-gpu/ (its own dir: the
 #      CPU build in build/ is left alone): 90-real, machine code only, no PTX, and --compress-mode=size, since
-#      each of trazo, trazo_tests and bvh_bench embeds all 16 kernel variants (22 MB each as sm_90 + PTX with
+#      each of trazo, trazo_tests and bvh_bench embeds all 17 kernel variants (22 MB each as sm_90 + PTX with
 #      the default compression, 20 MB as 90-real, 2.5 MB with size compression, which needs a CUDA 13 driver,
 #      580 or later: the lent H100/H200 have 580.159); Embree off (bvh_bench's GPU line does not need it, and
 #      libembree3 alone is ~44 MB), with DT_RPATH $ORIGIN/../lib so the carried binaries find the carried
