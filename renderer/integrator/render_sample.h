@@ -47,8 +47,14 @@ TRAZO_HD void antialiasingPosition(uint32_t k, uint32_t s, uint32_t px, uint32_t
     y = float(py) + (float(s / k) + 0.5f) / float(k);
 }
 
+// Whether a ray at this reflection depth may still send a reflected one (ReflectionSteps, and what the
+// pending ray's depth field holds).
+TRAZO_HD bool belowReflectionLimit(const RenderSettings& s, uint32_t depth) {
+    return depth < s.reflectionSteps && depth < kMaxReflectionDepth;
+}
+
 TRAZO_HD bool materialReflects(const MaterialData& m, const RenderSettings& s, uint32_t depth) {
-    return materialCanReflect(m, s) && depth < s.reflectionSteps && depth < kMaxReflectionDepth;
+    return materialCanReflect(m, s) && belowReflectionLimit(s, depth);
 }
 
 // This pass's direction within the cone of `halfAngle` about `axis`: the axis itself for a cone of 0, else one
@@ -204,12 +210,12 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         // as one ray with R (the same cone and strata).
         const bool fresnel = m.fresnel != 0u;
         const float f = fresnel ? dielectricFresnel(dot(d, sp.n), 1.0f, m.refractionIndex) : 0.0f;
-        const bool belowDepth = r.reflectionDepth < settings.reflectionSteps && r.reflectionDepth < kMaxReflectionDepth;
         const float a = kReflection && materialReflects(m, settings, r.reflectionDepth)
                             ? m.reflectionAmount * (fresnel ? f : 1.0f)
                             : 0.0f;
         const bool reflectsTransmitted =
-            kReflection && kRefraction && f > 0.0f && materialReflectsTransmitted(m, settings) && belowDepth;
+            kReflection && kRefraction && f > 0.0f && materialReflectsTransmitted(m, settings) &&
+            belowReflectionLimit(settings, r.reflectionDepth);
         if (kReflection && (a > 0.0f || reflectsTransmitted)) {
             const Vec3 dir = sampleReflection(sp, d, m, settings.reflectionQuality, strata, rng);
             if (dot(dir, sp.ng) > 0.0f) {  // directions below the geometric surface contribute 0
