@@ -7,8 +7,108 @@
 #include "integrator/direct_light.h"
 #include "integrator/scattering.h"
 #include "integrator/surface.h"
+#if TRAZO_SHADOW_PACKETS
+#include "integrator/nearest_packet.h"
+#endif
 
 namespace trazo {
+
+// What a direction's ray found at Q, an object's `hit` (j: the direction's index in the pass's block): Q's direct
+// light plus its emission, Direct(Q) + Ke(Q).
+template <FeatureMask F>
+TRAZO_HD Vec3 lightArrivingFrom(const SceneView& scene, const Ray& ray, const SurfaceHit& hit, const StrataKey& atQ,
+                                const StrataBlocks& blocks, uint32_t j, SampleStream& rng, uint32_t& rays) {
+    const ObjectRef& o = scene.objects[hit.object];
+    MaterialData mq = scene.materials[o.material];
+    SurfacePoint sq = surfaceAt(scene, o, hit, pointAt(ray, hit.t), materialHasTextures(mq));
+    applyTextures(scene, mq, sq);
+    const ShadingPoint spq = facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), ray.direction, sq);
+    return directLight<F>(scene, spq, mq, atQ, blocks.lightAtIndirect, j, rng, rays) + mq.emissive;
+}
+
+// The direction of stratum k of the q θ-bins × 2q φ-bins about sp.n, jittered by two draws of rng (θ first).
+TRAZO_HD Vec3 indirectDirection(const ShadingPoint& sp, uint32_t k, uint32_t q, SampleStream& rng) {
+    const float theta = (float(k % q) + rng.next()) / float(q) * 1.57079632679f;
+    const float phi = (float(k / q) + rng.next()) / float(2 * q) * 6.28318530718f;
+    return directionInCone(sp.n, theta, phi);
+}
+
+// indirectLight's sum over its block of directions (before the ColorBleeding / size factor), one ray at a time.
+template <FeatureMask F>
+TRAZO_HD Vec3 indirectLightOneByOne(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
+                                    const StrataBlock& directions, const StrataKey& atQ, const StrataBlocks& blocks,
+                                    SampleStream& rng, uint32_t& rays) {
+#if !TRAZO_DEVICE_PATHS
+    const OrenNayarView view = orenNayarView(sp.n, sp.v, m.roughness);  // the device: per direction, as PointBrdf
+#endif
+    Vec3 sum(0.0f);
+    for (uint32_t j = 0; j < directions.size; ++j) {
+        const Vec3 w = indirectDirection(sp, directions.stratum(j), scene.settings.indirectQuality, rng);
+        if (dot(w, sp.ng) <= 0.0f) continue;  // below the geometric surface: contributes 0
+        const Ray ray{sp.rayOrigin(w), w};
+        ++rays;
+        SurfaceHit hit;
+        if (!intersectScene(scene, ray, INFINITY, hit) || hit.object == kNoObject) continue;  // sky or a light
+        const Vec3 arriving = lightArrivingFrom<F>(scene, ray, hit, atQ, blocks, j, rng, rays);
+#if !TRAZO_DEVICE_PATHS
+        sum += m.diffuse * evalOrenNayar(view, sp.n, w) * arriving;
+#else
+        sum += m.diffuse * evalOrenNayar(sp.n, w, sp.v, m.roughness) * arriving;
+#endif
+    }
+    return sum;
+}
+
+#if TRAZO_SHADOW_PACKETS
+constexpr uint32_t kMinIndirectPacket = 4;  // fewer directions a pass are traced one by one
+
+// Whether indirectLightTogether serves the scene: objects the packet lanes test (no meshes or CSG solids, whose
+// rays would all be traced again) and, F without area lights, a direct light that draws no random numbers, so
+// that every direction's two draws can come before any Q is shaded and still be the loop's.
+template <FeatureMask F>
+inline bool indirectPacketsApply(const SceneView& scene, uint32_t directions) {
+    return (F & kFeatureAreaLights) == 0 && directions >= kMinIndirectPacket && scene.meshes.count == 0 &&
+           scene.csgs.count == 0;
+}
+
+// Host: indirectLightOneByOne with the directions traced kPacketRays at a time as one packet (tracePacket: every
+// direction above the geometric surface leaves from sp.above). The same draws, rays and sum, bit for bit, where
+// indirectPacketsApply.
+template <FeatureMask F>
+inline Vec3 indirectLightTogether(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
+                                  const StrataBlock& directions, const StrataKey& atQ, const StrataBlocks& blocks,
+                                  SampleStream& rng, uint32_t& rays) {
+    const OrenNayarView view = orenNayarView(sp.n, sp.v, m.roughness);
+    RayPacket packet;
+    TracedRay traced[kPacketRays];
+    Vec3 sum(0.0f);
+    for (uint32_t start = 0; start < directions.size; start += kPacketRays) {
+        const uint32_t count = directions.size - start < kPacketRays ? directions.size - start : kPacketRays;
+        uint64_t active = 0;
+        for (uint32_t i = 0; i < (uint32_t)kPacketRays; ++i) {
+            Vec3 w(0.0f, 0.0f, 1.0f);  // lanes past count are never traced
+            if (i < count) {
+                w = indirectDirection(sp, directions.stratum(start + i), scene.settings.indirectQuality, rng);
+                if (dot(w, sp.ng) > 0.0f) active |= 1ull << i;  // below the geometric surface: contributes 0
+            }
+            packet.dx[i] = w.x;
+            packet.dy[i] = w.y;
+            packet.dz[i] = w.z;
+            packet.tMax[i] = INFINITY;
+        }
+        rays += (uint32_t)__builtin_popcountll(active);
+        tracePacket(scene, sp.above, packet, active, traced);
+        for (uint64_t left = active; left; left &= left - 1) {
+            const int i = __builtin_ctzll(left);
+            const TracedRay& r = traced[i];
+            if (!r.found || r.hit.object == kNoObject) continue;  // sky or a light
+            const Vec3 arriving = lightArrivingFrom<F>(scene, r.ray, r.hit, atQ, blocks, start + i, rng, rays);
+            sum += m.diffuse * evalOrenNayar(view, sp.n, r.ray.direction) * arriving;
+        }
+    }
+    return sum;
+}
+#endif
 
 template <FeatureMask F>
 TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
@@ -19,32 +119,13 @@ TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, cons
     if (q == 0 || !(settings.colorBleeding > 0.0f) || isBlack(m.diffuse) || dot(sp.n, sp.v) <= 0.0f) return Vec3(0.0f);
     const StrataBlock directions = strata.block(kGridIndirect, 2 * q * q, blocks.indirect);
     const StrataKey atQ = strata.child(kBranchIndirect);
-#if !TRAZO_DEVICE_PATHS
-    const OrenNayarView view = orenNayarView(sp.n, sp.v, m.roughness);  // the device: per direction, as PointBrdf
+    Vec3 sum;
+#if TRAZO_SHADOW_PACKETS
+    if (indirectPacketsApply<F>(scene, directions.size))
+        sum = indirectLightTogether<F>(scene, sp, m, directions, atQ, blocks, rng, rays);
+    else
 #endif
-    Vec3 sum(0.0f);
-    for (uint32_t j = 0; j < directions.size; ++j) {
-        const uint32_t k = directions.stratum(j);
-        const float theta = (float(k % q) + rng.next()) / float(q) * 1.57079632679f;
-        const float phi = (float(k / q) + rng.next()) / float(2 * q) * 6.28318530718f;
-        const Vec3 w = directionInCone(sp.n, theta, phi);
-        if (dot(w, sp.ng) <= 0.0f) continue;  // below the geometric surface: contributes 0
-        const Ray ray{sp.rayOrigin(w), w};
-        ++rays;
-        SurfaceHit hit;
-        if (!intersectScene(scene, ray, INFINITY, hit) || hit.object == kNoObject) continue;  // sky or a light
-        const ObjectRef& o = scene.objects[hit.object];
-        MaterialData mq = scene.materials[o.material];
-        SurfacePoint sq = surfaceAt(scene, o, hit, pointAt(ray, hit.t), materialHasTextures(mq));
-        applyTextures(scene, mq, sq);
-        const ShadingPoint spq = facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), w, sq);
-        const Vec3 arriving = directLight<F>(scene, spq, mq, atQ, blocks.lightAtIndirect, j, rng, rays) + mq.emissive;
-#if !TRAZO_DEVICE_PATHS
-        sum += m.diffuse * evalOrenNayar(view, sp.n, w) * arriving;
-#else
-        sum += m.diffuse * evalOrenNayar(sp.n, w, sp.v, m.roughness) * arriving;
-#endif
-    }
+        sum = indirectLightOneByOne<F>(scene, sp, m, directions, atQ, blocks, rng, rays);
     return sum * (settings.colorBleeding / float(directions.size));
 }
 

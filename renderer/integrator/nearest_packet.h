@@ -1,11 +1,11 @@
 // Host only: the nearest object along each of up to 64 rays from one origin (a pinhole camera's rays through a
-// block of pixels) traced together through the top-level BVH, spheres, boxes and cylinders in SIMD lanes
+// block of pixels, a shading point's indirect directions) traced together through the top-level BVH, spheres, boxes and cylinders in SIMD lanes
 // (packet_lanes.h). A ray's answer is intersectScene's object part bit for bit. Why it is: an object's hit t is
 // its nearest root in (0, ∞) whatever the bound it is tested with, so the scalar traversal, which prunes only
 // what cannot hold anything nearer than its running bound, returns the object of least t; so does this one,
 // whose bound per ray is never below that least t. Only the order of visits differs, and with it the winner of
 // a tie (two objects at the same t): those rays, and any that reach a mesh or CSG solid, are left to the
-// scalar intersectScene (NearestHits::redo).
+// scalar intersectScene (NearestHits::redo); tracePacket completes every answer to intersectScene's.
 #pragma once
 
 #include "integrator/packet_lanes.h"
@@ -146,6 +146,54 @@ inline void nearestPacket(const SceneView& scene, Vec3 origin, RayPacket& rays, 
     }
     out.redo |= ties & active;
     for (uint64_t m = out.redo; m; m &= m - 1) out.object[__builtin_ctzll(m)] = kNoObject;
+}
+
+// The rays of `active` in `rays` (directions; tMax INFINITY, overwritten) from `origin`: out[i] is ray i and
+// intersectScene(scene, ray i, INFINITY)'s answer.
+inline void tracePacket(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, TracedRay* out) {
+    NearestHits nearest;
+    nearestPacket(scene, origin, rays, active, nearest);
+    uint32_t faceObject = kNoObject;  // the box face whose normal was computed last: most rays of a block share it
+    int lastFace = -1;
+    Vec3 faceNormal;
+    for (uint64_t m = active; m; m &= m - 1) {
+        const int i = __builtin_ctzll(m);
+        const Ray ray{origin, Vec3(rays.dx[i], rays.dy[i], rays.dz[i])};
+        TracedRay& c = out[i];
+        c.ray = ray;
+        const uint32_t object = nearest.object[i];
+        const ObjectKind kind = object != kNoObject ? scene.objects[object].kind : ObjectKind::Sphere;
+        // Ties, and the rays whose nearest object is a cylinder (the lanes keep no cylinder normal), take
+        // intersectScene whole.
+        if ((nearest.redo & (1ull << i)) || (kind != ObjectKind::Box && kind != ObjectKind::Sphere)) {
+            c.found = intersectScene(scene, ray, INFINITY, c.hit);
+            continue;
+        }
+        float tMax = INFINITY;
+        c.found = false;
+        if (object != kNoObject) {
+            const ObjectRef& o = scene.objects[object];
+            ShapeHit h{};
+            if (o.kind == ObjectKind::Box) {  // intersectBox's normal of the face the lanes found
+                const int face = nearest.boxFace[i];
+                if (object != faceObject || face != lastFace) {
+                    const Vec3 row = scene.boxes[o.index].objectFromWorld.row[face >> 1];
+                    faceNormal = normalize(row * (face & 1 ? 1.0f : -1.0f));
+                    faceObject = object;
+                    lastFace = face;
+                }
+                h.t = nearest.t[i];
+                h.normal = faceNormal;
+            } else {  // a sphere: the lanes computed intersectSphere's normal
+                h.t = nearest.t[i];
+                h.normal = Vec3(nearest.nx[i], nearest.ny[i], nearest.nz[i]);
+            }
+            c.hit = SurfaceHit{h.t, h.normal, object, 0, h.triangle, h.b1, h.b2};
+            tMax = h.t;
+            c.found = true;
+        }
+        if (intersectAreaLights(scene, ray, tMax, c.hit)) c.found = true;
+    }
 }
 
 }  // namespace trazo

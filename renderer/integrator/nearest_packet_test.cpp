@@ -1,4 +1,4 @@
-// Tests (host) that a packet of camera rays traced together (traceCameraPacket, nearestPacket) answers exactly
+// Tests (host) that a packet of camera rays traced together (tracePacket, nearestPacket) answers exactly
 // as intersectScene does ray by ray, at every ISA width this CPU runs and in this translation unit's own build:
 // random scenes of spheres, boxes, cylinders, meshes and CSG solids, with a light rectangle and two objects at
 // the same place (ties); rays towards surface points, box faces and edges, along axes with signed zeros. And
@@ -55,7 +55,7 @@ uint64_t makeRays(const SceneView& view, Vec3 origin, std::mt19937& rng, bool pa
 
 // The fields of intersectScene's answer that the integrator reads: all of them, but the triangle and
 // barycentrics of a hit that is not on a mesh (surfaceAt reads those of mesh hits only).
-void expectSameHit(const SceneView& view, const CameraHit& got, bool found, const SurfaceHit& expected,
+void expectSameHit(const SceneView& view, const TracedRay& got, bool found, const SurfaceHit& expected,
                    const char* where, uint32_t seed, int lane) {
     ASSERT_EQ(got.found, found) << where << ", seed " << seed << " lane " << lane;
     if (!found) return;
@@ -92,16 +92,16 @@ TEST(NearestPacket, CameraHitsMatchIntersectSceneOnEveryIsa) {
                 missesSeen += !found[i];
                 lightSeen += found[i] && expected[i].object == kNoObject;
             }
-            CameraHit got[kPacketRays];
+            TracedRay got[kPacketRays];
             RayPacket copy = rays;
-            traceCameraPacket(scene.view, origin, copy, active, got);
+            tracePacket(scene.view, origin, copy, active, got);
             for (int i = 0; i < kPacketRays; ++i)
                 if (active >> i & 1) expectSameHit(scene.view, got[i], found[i], expected[i], "this build", seed, i);
             for (CpuIsa isa : kCpuIsas) {
                 const CpuKernels* k = cpuKernelsFor(isa);
                 if (!k) continue;
                 copy = rays;
-                k->cameraPackets().traceCameraPacket(scene.view, origin, copy, active, got);
+                k->cameraPackets().tracePacket(scene.view, origin, copy, active, got);
                 for (int i = 0; i < kPacketRays; ++i)
                     if (active >> i & 1)
                         expectSameHit(scene.view, got[i], found[i], expected[i], cpuIsaName(isa), seed, i);
@@ -129,7 +129,7 @@ TEST(NearestPacket, TiesAreRedoneAndOthersAnswered) {
     EXPECT_EQ(nearest.redo & 0xffffffffull, 0xffffffffull);
 }
 
-// renderSample given traceCameraPacket's hits returns its own sample, rays and all, bit for bit.
+// renderSample given tracePacket's hits returns its own sample, rays and all, bit for bit.
 TEST(NearestPacket, RenderSampleWithGivenHitsIsTheSame) {
     uint32_t compared = 0;
     for (uint32_t seed = 1; seed <= 6; ++seed) {
@@ -148,8 +148,8 @@ TEST(NearestPacket, RenderSampleWithGivenHitsIsTheSame) {
                     rays.dx[i] = r.direction.x, rays.dy[i] = r.direction.y, rays.dz[i] = r.direction.z;
                     rays.tMax[i] = INFINITY;
                 }
-                CameraHit hits[kPacketRays];
-                traceCameraPacket(scene.view, camera.origin, rays, ~0ull, hits);
+                TracedRay hits[kPacketRays];
+                tracePacket(scene.view, camera.origin, rays, ~0ull, hits);
                 for (int i = 0; i < kPacketRays; ++i) {
                     uint32_t raysOne = 0, raysGiven = 0;
                     const uint32_t px = bx + i % 8, py = by + i / 8;

@@ -103,20 +103,12 @@ TRAZO_HD bool leaveSolid(Vec3 d, Vec3 nInside, Vec3 ngOutward, const MaterialDat
                               out);
 }
 
-// A camera ray and its intersectScene answer, when the caller traced the ray already (the CPU's tile loop traces
-// a block of camera rays together: integrator/camera_packet.h).
-struct CameraHit {
-    Ray ray;
-    SurfaceHit hit;
-    bool found;
-};
-
 // Color(0) along a camera ray: the whole tree of reflected and transmitted rays, as an explicit stack.
 // `given`: the camera ray's intersectScene answer, or null (host x86 only: the device never passes one).
 template <FeatureMask F>
 TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const StrataKey& pixelStrata,
                              const StrataBlocks& blocks, SampleStream& rng, uint32_t& rays,
-                             const CameraHit* given = nullptr) {
+                             const TracedRay* given = nullptr) {
 #if !TRAZO_SHADOW_PACKETS
     (void)given;  // only the host's tile loop passes one
 #endif
@@ -280,7 +272,7 @@ TRAZO_HD Ray cameraRay(const CameraFrame& camera, const RenderSettings& s, float
 // null): the scene's antialiasing side is 1, and this is the camera ray of the pixel's one position, traced.
 template <FeatureMask F>
 TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
-                           uint32_t pass, uint32_t& rays, const CameraHit* given = nullptr) {
+                           uint32_t pass, uint32_t& rays, const TracedRay* given = nullptr) {
     const uint32_t pixelIndex = py * frame.camera.width + px;
     SampleStream rng(frame.seed, pixelIndex, pass);
     const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, kSampleTreeRoot};

@@ -21,6 +21,15 @@ struct SurfaceHit {
     float b1, b2;
 };
 
+// A ray and its intersectScene answer (found: whether there is one), for code that traced the ray already: the
+// CPU's tile loop traces a block of camera rays together, indirect light a shading point's directions
+// (nearest_packet.h's tracePacket).
+struct TracedRay {
+    Ray ray;
+    SurfaceHit hit;
+    bool found;
+};
+
 // `stack`: the traversal stack a mesh continues on (the top level's, in intersectScene).
 TRAZO_HD bool intersectObject(const SceneView& scene, const ObjectRef& o, const Ray& ray, float tMax,
                               ClosestStack& stack, ShapeHit& hit) {

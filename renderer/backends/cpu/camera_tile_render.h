@@ -20,7 +20,7 @@ namespace {
 constexpr uint32_t kPacketSide = 8;  // a block of kPacketSide² ≤ kPacketRays pixels traces its camera rays together
 static_assert(kPacketSide * kPacketSide <= (uint32_t)kPacketRays, "a block's rays fit one packet");
 
-// tile_render.h's renderTilePasses with each block's camera rays traced as one packet (traceCameraPacket), where
+// tile_render.h's renderTilePasses with each block's camera rays traced as one packet (tracePacket), where
 // cameraPacketsApply: the same samples, bit for bit. Per pixel the passes still add in pass order. flatten:
 // everything the block loop calls is inlined into it (GCC's own choice left the shading and shadow rays out of
 // line here: 5% more instructions on scene1_point).
@@ -29,7 +29,7 @@ __attribute__((flatten)) uint64_t renderTilePassesInPackets(const SceneView& sce
                                                             uint32_t firstPass, uint32_t passCount, AccumPixel* accum) {
     uint64_t rays = 0;
     RayPacket packet;
-    CameraHit hits[kPacketRays];
+    TracedRay hits[kPacketRays];
     uint32_t imageX[kPacketRays], imageY[kPacketRays], accumIndex[kPacketRays];
     alignas(64) float pixelX[kPacketRays], pixelY[kPacketRays];
     for (uint32_t by = tile.y0; by < tile.y1; by += kPacketSide) {
@@ -52,7 +52,7 @@ __attribute__((flatten)) uint64_t renderTilePassesInPackets(const SceneView& sce
             }
             aimCameraRays(frame.camera, pixelX, pixelY, packet);  // centreCameraRay of each pixel
             for (int i = 0; i < kPacketRays; ++i) packet.tMax[i] = INFINITY;
-            traceCameraPacket(scene, frame.camera.origin, packet, active, hits);
+            tracePacket(scene, frame.camera.origin, packet, active, hits);
             for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
                 for (uint64_t m = active; m; m &= m - 1) {
                     const int i = __builtin_ctzll(m);
@@ -74,13 +74,13 @@ struct PacketTileVariant {
     static constexpr TileRenderFn value = (F & kFeatureIndirect) ? nullptr : &renderTilePassesInPackets<F>;
 };
 
-void traceCameraPacketEntry(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, CameraHit* out) {
-    traceCameraPacket(scene, origin, rays, active, out);
+void tracePacketEntry(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, TracedRay* out) {
+    tracePacket(scene, origin, rays, active, out);
 }
 
 constexpr CameraPacketKernels makeCameraPacketKernels() {
     constexpr auto tiles = makeVariantTable<PacketTileVariant>();
-    CameraPacketKernels k{true, {}, &traceCameraPacketEntry};
+    CameraPacketKernels k{true, {}, &tracePacketEntry};
     for (uint32_t i = 0; i < kSampleVariantCount; ++i) k.renderTile[i] = tiles[i];
     return k;
 }

@@ -15,7 +15,7 @@
 namespace trazo {
 
 struct RayPacket;  // integrator/packet_lanes.h
-struct CameraHit;  // integrator/render_sample.h
+struct TracedRay;  // integrator/scene_intersect.h
 
 enum class CpuIsa : uint32_t { Sse2, Avx2, Avx512 };
 constexpr CpuIsa kCpuIsas[] = {CpuIsa::Sse2, CpuIsa::Avx2, CpuIsa::Avx512};
@@ -35,8 +35,8 @@ using TileRenderFn = uint64_t (*)(const SceneView& scene, const FrameParams& fra
 struct CameraPacketKernels {
     bool available;  // false in the device-paths build, which has no packets
     std::array<TileRenderFn, kSampleVariantCount> renderTile;  // by sampleVariantFor(features); null: not for it
-    // traceCameraPacket (integrator/camera_packet.h) at this ISA's width.
-    void (*traceCameraPacket)(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, CameraHit* out);
+    // tracePacket (integrator/nearest_packet.h) at this ISA's width.
+    void (*tracePacket)(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, TracedRay* out);
 };
 const CameraPacketKernels& cameraPacketKernelsSse2();
 const CameraPacketKernels& cameraPacketKernelsAvx2();
