@@ -53,19 +53,34 @@ struct PointBrdf {
     }
 };
 
+// PointBrdf(sp, m).reflects(), without the view it computes.
+TRAZO_HD bool reflectsLight(const ShadingPoint& sp, const MaterialData& m) {
+    return (!isBlack(m.diffuse) || !isBlack(m.specular)) && dot(sp.n, sp.v) > 0.0f;
+}
+
+// The shadow ray from the shading point towards a light sample X, segment (0, tMax), its direction l the unit
+// vector to X; false where Shade is 0 without one (X at the point, or not above its shading normal).
+TRAZO_HD bool aimShadowRay(const ShadingPoint& sp, Vec3 x, Ray& ray, float& tMax) {
+    Vec3 toLight = x - sp.p;
+    const float dist = length(toLight);
+    if (!(dist > 0.0f)) return false;
+    const Vec3 l = toLight / dist;
+    if (dot(sp.n, l) <= 0.0f) return false;
+    ray = Ray{sp.rayOrigin(l), l};
+    tMax = length(x - ray.origin);
+    return true;
+}
+
 // One light sample X seen from the shading point: visible ⇒ Shade(P, L, C) = C ⊙ brdf(L). Counts the
 // shadow ray.
 TRAZO_HD Vec3 shadeFromPoint(const SceneView& scene, const ShadingPoint& sp, const PointBrdf& brdf, Vec3 x,
                              Vec3 color, uint32_t& rays) {
-    Vec3 toLight = x - sp.p;
-    const float dist = length(toLight);
-    if (!(dist > 0.0f)) return Vec3(0.0f);
-    const Vec3 l = toLight / dist;
-    if (dot(sp.n, l) <= 0.0f) return Vec3(0.0f);  // Shade would be 0: skip the shadow ray
-    const Vec3 origin = sp.rayOrigin(l);
+    Ray ray;
+    float tMax;
+    if (!aimShadowRay(sp, x, ray, tMax)) return Vec3(0.0f);  // Shade would be 0: no shadow ray
     ++rays;
-    if (occluded(scene, Ray{origin, l}, length(x - origin))) return Vec3(0.0f);
-    return color * brdf.eval(l);
+    if (occluded(scene, ray, tMax)) return Vec3(0.0f);
+    return color * brdf.eval(ray.direction);
 }
 
 // The jittered point of cell s of the light's grid (two draws of rng, u first).
@@ -178,6 +193,43 @@ inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, c
             lightSum += visible & (1ull << k) ? light.color * Vec3(fx[k], fy[k], fz[k]) : Vec3(0.0f);
     }
     return lightSum;
+}
+
+// Host: directLight<F> for F without area lights (point lights only) at each point of `at` (bit i: points[i]
+// with materials[i]) into out[i]: for each light in turn, the points' shadow rays traced together, each from
+// its own origin (occludedPacket). The same rays and sums, bit for bit.
+inline void directPointLightsTogether(const SceneView& scene, const ShadingPoint* points,
+                                      const MaterialData* materials, uint64_t at, Vec3* out, uint32_t& rays) {
+    uint64_t reflecting = 0;
+    for (uint64_t left = at; left; left &= left - 1) {
+        const int i = __builtin_ctzll(left);
+        out[i] = Vec3(0.0f);
+        if (reflectsLight(points[i], materials[i])) reflecting |= 1ull << i;
+    }
+    if (!reflecting) return;
+    RayPacket packet;
+    RayOrigins origins;
+    const int lanesUsed = (64 - __builtin_clzll(reflecting) + packet_detail::kLanes - 1) / packet_detail::kLanes *
+                          packet_detail::kLanes;
+    for (uint32_t k = 0; k < scene.pointLights.count; ++k) {
+        const PointLightData& light = scene.pointLights[k];
+        uint64_t aimed = 0;
+        for (int i = 0; i < lanesUsed; ++i) {
+            Ray ray{Vec3(0.0f), Vec3(0.0f, 0.0f, 1.0f)};  // lanes not aimed are never traced
+            float tMax = 0.0f;
+            if ((reflecting >> i & 1u) && aimShadowRay(points[i], light.position, ray, tMax)) aimed |= 1ull << i;
+            origins.ox[i] = ray.origin.x, origins.oy[i] = ray.origin.y, origins.oz[i] = ray.origin.z;
+            packet.dx[i] = ray.direction.x, packet.dy[i] = ray.direction.y, packet.dz[i] = ray.direction.z;
+            packet.tMax[i] = tMax;
+        }
+        rays += (uint32_t)__builtin_popcountll(aimed);
+        const uint64_t visible = aimed & ~occludedPacket(scene, origins, packet, aimed);
+        for (uint64_t left = reflecting; left; left &= left - 1) {
+            const int i = __builtin_ctzll(left);
+            const Vec3 l(packet.dx[i], packet.dy[i], packet.dz[i]);
+            out[i] += visible >> i & 1u ? light.color * PointBrdf(points[i], materials[i]).eval(l) : Vec3(0.0f);
+        }
+    }
 }
 #endif
 

@@ -8,6 +8,8 @@
 #include "integrator/scattering.h"
 #include "integrator/surface.h"
 #if TRAZO_SHADOW_PACKETS
+#include <new>
+
 #include "integrator/nearest_packet.h"
 #endif
 
@@ -15,14 +17,20 @@ namespace trazo {
 
 // What a direction's ray found at Q, an object's `hit` (j: the direction's index in the pass's block): Q's direct
 // light plus its emission, Direct(Q) + Ke(Q).
+// The shading point at Q, an object's `hit` along `ray`, and in mq its material with textures applied.
+TRAZO_HD ShadingPoint shadingPointAt(const SceneView& scene, const Ray& ray, const SurfaceHit& hit, MaterialData& mq) {
+    const ObjectRef& o = scene.objects[hit.object];
+    mq = scene.materials[o.material];
+    SurfacePoint sq = surfaceAt(scene, o, hit, pointAt(ray, hit.t), materialHasTextures(mq));
+    applyTextures(scene, mq, sq);
+    return facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), ray.direction, sq);
+}
+
 template <FeatureMask F>
 TRAZO_HD Vec3 lightArrivingFrom(const SceneView& scene, const Ray& ray, const SurfaceHit& hit, const StrataKey& atQ,
                                 const StrataBlocks& blocks, uint32_t j, SampleStream& rng, uint32_t& rays) {
-    const ObjectRef& o = scene.objects[hit.object];
-    MaterialData mq = scene.materials[o.material];
-    SurfacePoint sq = surfaceAt(scene, o, hit, pointAt(ray, hit.t), materialHasTextures(mq));
-    applyTextures(scene, mq, sq);
-    const ShadingPoint spq = facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), ray.direction, sq);
+    MaterialData mq;
+    const ShadingPoint spq = shadingPointAt(scene, ray, hit, mq);
     return directLight<F>(scene, spq, mq, atQ, blocks.lightAtIndirect, j, rng, rays) + mq.emissive;
 }
 
@@ -63,24 +71,35 @@ TRAZO_HD Vec3 indirectLightOneByOne(const SceneView& scene, const ShadingPoint& 
 constexpr uint32_t kMinIndirectPacket = 4;  // fewer directions a pass are traced one by one
 
 // Whether indirectLightTogether serves the scene: objects the packet lanes test (no meshes or CSG solids, whose
-// rays would all be traced again) and, F without area lights, a direct light that draws no random numbers, so
-// that every direction's two draws can come before any Q is shaded and still be the loop's.
+// rays would all be traced again) and, F without area lights, a direct light of point lights only, which draws
+// no random numbers (so every direction's two draws can come before any Q is shaded and still be the loop's)
+// and whose shadow rays from the Qs can be traced together (directPointLightsTogether).
 template <FeatureMask F>
 inline bool indirectPacketsApply(const SceneView& scene, uint32_t directions) {
-    return (F & kFeatureAreaLights) == 0 && directions >= kMinIndirectPacket && scene.meshes.count == 0 &&
-           scene.csgs.count == 0;
+    if constexpr ((F & kFeatureAreaLights) != 0) return false;
+    return directions >= kMinIndirectPacket && scene.meshes.count == 0 && scene.csgs.count == 0;
 }
 
 // Host: indirectLightOneByOne with the directions traced kPacketRays at a time as one packet (tracePacket: every
-// direction above the geometric surface leaves from sp.above). The same draws, rays and sum, bit for bit, where
-// indirectPacketsApply.
+// direction above the geometric surface leaves from sp.above), and the shadow rays of the points Q they find
+// towards each point light as another (directPointLightsTogether). The same draws, rays and sum, bit for bit,
+// where indirectPacketsApply.
 template <FeatureMask F>
 inline Vec3 indirectLightTogether(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
-                                  const StrataBlock& directions, const StrataKey& atQ, const StrataBlocks& blocks,
-                                  SampleStream& rng, uint32_t& rays) {
+                                  const StrataBlock& directions, SampleStream& rng, uint32_t& rays) {
+    static_assert((F & kFeatureAreaLights) == 0, "Direct(Q) of point lights only: directPointLightsTogether");
     const OrenNayarView view = orenNayarView(sp.n, sp.v, m.roughness);
     RayPacket packet;
-    TracedRay traced[kPacketRays];
+    // Storage without construction (its objects begin where they are written): zeroing 64 of each per shading
+    // point cost more than the packets saved.
+    alignas(TracedRay) unsigned char tracedBytes[sizeof(TracedRay) * kPacketRays];
+    TracedRay* traced = reinterpret_cast<TracedRay*>(tracedBytes);
+    alignas(ShadingPoint) unsigned char pointBytes[sizeof(ShadingPoint) * kPacketRays];  // Q, where atObject
+    ShadingPoint* points = reinterpret_cast<ShadingPoint*>(pointBytes);
+    alignas(MaterialData) unsigned char materialBytes[sizeof(MaterialData) * kPacketRays];  // Q's, where atObject
+    MaterialData* materials = reinterpret_cast<MaterialData*>(materialBytes);
+    alignas(Vec3) unsigned char arrivingBytes[sizeof(Vec3) * kPacketRays];
+    Vec3* arriving = reinterpret_cast<Vec3*>(arrivingBytes);
     Vec3 sum(0.0f);
     for (uint32_t start = 0; start < directions.size; start += kPacketRays) {
         const uint32_t count = directions.size - start < kPacketRays ? directions.size - start : kPacketRays;
@@ -98,12 +117,19 @@ inline Vec3 indirectLightTogether(const SceneView& scene, const ShadingPoint& sp
         }
         rays += (uint32_t)__builtin_popcountll(active);
         tracePacket(scene, sp.above, packet, active, traced);
+        uint64_t atObject = 0;  // the directions that found an object (not the sky, nor a light)
         for (uint64_t left = active; left; left &= left - 1) {
             const int i = __builtin_ctzll(left);
             const TracedRay& r = traced[i];
-            if (!r.found || r.hit.object == kNoObject) continue;  // sky or a light
-            const Vec3 arriving = lightArrivingFrom<F>(scene, r.ray, r.hit, atQ, blocks, start + i, rng, rays);
-            sum += m.diffuse * evalOrenNayar(view, sp.n, r.ray.direction) * arriving;
+            if (!r.found || r.hit.object == kNoObject) continue;
+            new (points + i) ShadingPoint(shadingPointAt(scene, r.ray, r.hit, materials[i]));
+            atObject |= 1ull << i;
+        }
+        directPointLightsTogether(scene, points, materials, atObject, arriving, rays);  // Direct(Q)
+        for (uint64_t left = atObject; left; left &= left - 1) {
+            const int i = __builtin_ctzll(left);
+            const Vec3 fromQ = arriving[i] + materials[i].emissive;  // Direct(Q) + Ke(Q)
+            sum += m.diffuse * evalOrenNayar(view, sp.n, traced[i].ray.direction) * fromQ;
         }
     }
     return sum;
@@ -119,13 +145,14 @@ TRAZO_HD Vec3 indirectLight(const SceneView& scene, const ShadingPoint& sp, cons
     if (q == 0 || !(settings.colorBleeding > 0.0f) || isBlack(m.diffuse) || dot(sp.n, sp.v) <= 0.0f) return Vec3(0.0f);
     const StrataBlock directions = strata.block(kGridIndirect, 2 * q * q, blocks.indirect);
     const StrataKey atQ = strata.child(kBranchIndirect);
-    Vec3 sum;
 #if TRAZO_SHADOW_PACKETS
-    if (indirectPacketsApply<F>(scene, directions.size))
-        sum = indirectLightTogether<F>(scene, sp, m, directions, atQ, blocks, rng, rays);
-    else
+    if constexpr ((F & kFeatureAreaLights) == 0) {
+        if (indirectPacketsApply<F>(scene, directions.size))
+            return indirectLightTogether<F>(scene, sp, m, directions, rng, rays) *
+                   (settings.colorBleeding / float(directions.size));
+    }
 #endif
-        sum = indirectLightOneByOne<F>(scene, sp, m, directions, atQ, blocks, rng, rays);
+    const Vec3 sum = indirectLightOneByOne<F>(scene, sp, m, directions, atQ, blocks, rng, rays);
     return sum * (settings.colorBleeding / float(directions.size));
 }
 

@@ -59,8 +59,8 @@ TEST(IndirectLight, TogetherIsOneByOneBitForBit) {
                         uint32_t raysOne = 0, raysTogether = 0;
                         const Vec3 a = indirectLightOneByOne<kFeatures>(scene.view, sp, m, directions, atQ, blocks,
                                                                          one, raysOne);
-                        const Vec3 b = indirectLightTogether<kFeatures>(scene.view, sp, m, directions, atQ, blocks,
-                                                                         together, raysTogether);
+                        const Vec3 b =
+                            indirectLightTogether<kFeatures>(scene.view, sp, m, directions, together, raysTogether);
                         ASSERT_EQ(std::memcmp(&a, &b, sizeof a), 0)
                             << "seed " << seed << " q " << q << " target " << target << " pixel " << px << ", " << py
                             << ": " << a.x << " " << a.y << " " << a.z << " against " << b.x << " " << b.y << " "

@@ -124,7 +124,7 @@ inline void nearestPacket(const SceneView& scene, Vec3 origin, RayPacket& rays, 
         }
         const WideBvhNode& node = nodes[e.ref];
         uint64_t childRays[kBvhWidth];
-        raysEnteringChildren(node, origin, inv, rays.tMax, live, childRays);
+        raysEnteringChildren(node, SharedOrigin{origin}, inv, rays.tMax, live, childRays);
         // Nearer children later on the stack, so that they are visited first and tighten the bounds: ordered
         // by the entry distance of their boxes' centres along the packet's first ray.
         const int first = __builtin_ctzll(live);

@@ -1,4 +1,5 @@
-// Host only: up to 64 shadow rays from one origin (one shading point's block of area-light cells) traced
+// Host only: up to 64 shadow rays from one origin (one shading point's block of area-light cells), or each from
+// its own (the points that a shading point's indirect directions found, towards one point light), traced
 // together through the top-level BVH, with a mask of the rays still in play per node, and spheres, boxes
 // and cylinders tested against several rays at once (packet_lanes.h). Each ray's answer is occluded()'s bit for
 // bit: a ray meets the same boxes (the slab test of intersectChildren, the same IEEE operations in the same
@@ -14,17 +15,28 @@ namespace trazo {
 
 namespace packet_detail {
 
-// The rays of `live` that object o blocks.
-inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, Vec3 origin, const RayPacket& rays,
-                                   uint64_t live) {
+// The rays of `live` that object o blocks. Origins: SharedOrigin or OwnOrigins (packet_lanes.h).
+template <class Origins>
+inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, const Origins& origins,
+                                   const RayPacket& rays, uint64_t live) {
     uint64_t blocked = 0;
     LaneF tHit;  // unused: any hit in (0, tMax) blocks
     switch (o.kind) {
         case ObjectKind::Sphere: {
-            const SphereSetup k = sphereSetup(scene.spheres[o.index], origin);
-            for (int g = 0; g < kGroups; ++g) {
-                const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                if (lanes) blocked |= sphereHits(k, loadGroup(rays, g), lanes, tHit) << (g * kLanes);
+            const SphereShape& sphere = scene.spheres[o.index];
+            if constexpr (std::is_same_v<Origins, SharedOrigin>) {
+                const SphereSetup k = sphereSetup(sphere, origins.origin);
+                for (int g = 0; g < kGroups; ++g) {
+                    const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
+                    if (lanes) blocked |= sphereHits(k, loadGroup(rays, g), lanes, tHit) << (g * kLanes);
+                }
+            } else {
+                for (int g = 0; g < kGroups; ++g) {
+                    const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
+                    if (lanes)
+                        blocked |= sphereHits(sphereSetup(sphere, origins.group(g)), loadGroup(rays, g), lanes, tHit)
+                                   << (g * kLanes);
+                }
             }
             return blocked;
         }
@@ -32,7 +44,7 @@ inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, V
             const BoxShape& box = scene.boxes[o.index];
             for (int g = 0; g < kGroups; ++g) {
                 const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                if (lanes) blocked |= boxHits(box, origin, loadGroup(rays, g), lanes, tHit) << (g * kLanes);
+                if (lanes) blocked |= boxHits(box, origins.group(g), loadGroup(rays, g), lanes, tHit) << (g * kLanes);
             }
             return blocked;
         }
@@ -40,7 +52,8 @@ inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, V
             const CylinderShape& cyl = scene.cylinders[o.index];
             for (int g = 0; g < kGroups; ++g) {
                 const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                if (lanes) blocked |= cylinderHits(cyl, origin, loadGroup(rays, g), lanes, tHit) << (g * kLanes);
+                if (lanes)
+                    blocked |= cylinderHits(cyl, origins.group(g), loadGroup(rays, g), lanes, tHit) << (g * kLanes);
             }
             return blocked;
         }
@@ -49,7 +62,7 @@ inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, V
             AnyStack stack{entries, kTraversalStackSize, 0};
             for (uint64_t m = live; m; m &= m - 1) {
                 const int i = __builtin_ctzll(m);
-                const Ray ray{origin, Vec3(rays.dx[i], rays.dy[i], rays.dz[i])};
+                const Ray ray{origins.at(i), Vec3(rays.dx[i], rays.dy[i], rays.dz[i])};
                 const bool blocks = visitObject(scene, o, [&](const auto& shape) {
                     return objectBlocks(scene, shape, ray, rays.tMax[i], stack);
                 });
@@ -109,10 +122,11 @@ inline AimedRays aimShadowRays(const RectangleShape& rect, uint32_t cellsU, uint
     return aimed;
 }
 
-// The rays of `active` (bit i: ray i of `rays`) that something blocks: occluded(scene, Ray{origin, ray i's
-// direction}, ray i's tMax) for each, bit for bit.
-inline uint64_t occludedPacket(const SceneView& scene, Vec3 origin, const RayPacket& rays, uint64_t active) {
-    using namespace packet_detail;
+namespace packet_detail {
+
+template <class Origins>
+inline uint64_t occludedPacketFrom(const SceneView& scene, const Origins& origins, const RayPacket& rays,
+                                   uint64_t active) {
     if (scene.topNodes.count == 0 || !active) return 0;
     const InverseDirections inv = inverseDirections(rays);
     const WideBvhNode* nodes = scene.topNodes.data;
@@ -129,17 +143,31 @@ inline uint64_t occludedPacket(const SceneView& scene, Vec3 origin, const RayPac
             for (uint32_t i = first; i < end; ++i) {
                 const uint64_t left = live & ~blocked;
                 if (!left) break;
-                blocked |= objectBlocksPacket(scene, scene.objects[i], origin, rays, left);
+                blocked |= objectBlocksPacket(scene, scene.objects[i], origins, rays, left);
             }
             continue;
         }
         const WideBvhNode& node = nodes[e.ref];
         uint64_t childRays[kBvhWidth];
-        raysEnteringChildren(node, origin, inv, rays.tMax, live, childRays);
+        raysEnteringChildren(node, origins, inv, rays.tMax, live, childRays);
         for (int c = kBvhWidth - 1; c >= 0; --c)
             if (childRays[c]) stack[size++] = {node.child[c], childRays[c]};
     }
     return blocked & active;
+}
+
+}  // namespace packet_detail
+
+// The rays of `active` (bit i: ray i of `rays`) that something blocks: occluded(scene, Ray{origin, ray i's
+// direction}, ray i's tMax) for each, bit for bit.
+inline uint64_t occludedPacket(const SceneView& scene, Vec3 origin, const RayPacket& rays, uint64_t active) {
+    return packet_detail::occludedPacketFrom(scene, packet_detail::SharedOrigin{origin}, rays, active);
+}
+
+// The same for rays with origins of their own: occluded(scene, Ray{origin i, direction i}, tMax i).
+inline uint64_t occludedPacket(const SceneView& scene, const RayOrigins& origins, const RayPacket& rays,
+                               uint64_t active) {
+    return packet_detail::occludedPacketFrom(scene, packet_detail::OwnOrigins{origins}, rays, active);
 }
 
 }  // namespace trazo

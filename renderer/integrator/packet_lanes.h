@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "core/rng.h"
 #include "integrator/scene_intersect.h"
@@ -122,6 +123,51 @@ inline V3 crossAccurate(Vec3 u, const V3& v) {
             differenceOfProducts(splat(u.z), v.x, splat(u.x), v.z),
             differenceOfProducts(splat(u.x), v.y, splat(u.y), v.x)};
 }
+inline V3 crossAccurate(const V3& u, const V3& v) {
+    return {differenceOfProducts(u.y, v.z, u.z, v.y), differenceOfProducts(u.z, v.x, u.x, v.z),
+            differenceOfProducts(u.x, v.y, u.y, v.x)};
+}
+
+// For rays with origins of their own (RayOrigins): the scalar helpers that the shape tests apply to the origin,
+// lane by lane and operation for operation (core/vec3.h, core/affine.h, geometry/exact_float.h). Overloads for
+// a float or a Vec3 let one test serve both a shared origin and one per ray.
+inline float absOf(float x) { return fabsf(x); }
+inline LaneF absOf(LaneF x) { return fabs(x); }
+inline LaneF asLanes(float x) { return splat(x); }
+inline LaneF asLanes(LaneF x) { return x; }
+inline float component(Vec3 v, int axis) { return v[axis]; }
+inline LaneF component(const V3& v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
+inline V3 operator-(const V3& a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline LaneF maxOf(LaneF a, LaneF b) { return a > b ? a : b; }
+inline LaneF maxComponent(const V3& a) { return maxOf(a.x, maxOf(a.y, a.z)); }
+inline V3 abs(const V3& a) { return {fabs(a.x), fabs(a.y), fabs(a.z)}; }
+inline V3 applyToPoint(const Affine3& m, const V3& p) {
+    return {dot(m.row[0], p) + m.translation.x, dot(m.row[1], p) + m.translation.y, dot(m.row[2], p) + m.translation.z};
+}
+inline Vec3 applyToPoint(const Affine3& m, Vec3 p) { return m.applyToPoint(p); }
+struct TwoLanes {
+    LaneF hi, lo;
+};
+inline TwoLanes twoSum(LaneF a, LaneF b) {
+    const LaneF sum = a + b;
+    const LaneF bVirtual = sum - a;
+    const LaneF aVirtual = sum - bVirtual;
+    return {sum, (a - aVirtual) + (b - bVirtual)};
+}
+inline TwoLanes twoProduct(LaneF a, LaneF b) {
+    const LaneF p = a * b;
+    return {p, fma(a, b, -p)};
+}
+inline LaneF lengthSquaredMinusSquareAccurate(const V3& u, float r) {
+    const TwoLanes x = twoProduct(u.x, u.x);
+    const TwoLanes y = twoProduct(u.y, u.y);
+    const TwoLanes z = twoProduct(u.z, u.z);
+    const TwoFloat rr = trazo::twoProduct(r, r);
+    const TwoLanes s1 = twoSum(x.hi, y.hi);
+    const TwoLanes s2 = twoSum(s1.hi, z.hi);
+    const TwoLanes s3 = twoSum(s2.hi, splat(-rr.hi));
+    return s3.hi + ((s1.lo + s2.lo + s3.lo) + (x.lo + y.lo + z.lo - rr.lo));
+}
 
 // The rays of group g.
 struct Group {
@@ -145,9 +191,9 @@ inline SphereSetup sphereSetup(const SphereShape& s, Vec3 origin) {
     const float margin = 1e-5f * (maxComponent(abs(origin)) + maxComponent(abs(s.center)) + maxComponent(abs(f0)));
     const float reach = s.radius + margin;
     k.reach2 = reach * reach;
-    const TwoFloat fx = twoSum(origin.x, -s.center.x);
-    const TwoFloat fy = twoSum(origin.y, -s.center.y);
-    const TwoFloat fz = twoSum(origin.z, -s.center.z);
+    const TwoFloat fx = trazo::twoSum(origin.x, -s.center.x);
+    const TwoFloat fy = trazo::twoSum(origin.y, -s.center.y);
+    const TwoFloat fz = trazo::twoSum(origin.z, -s.center.z);
     k.f = Vec3(fx.hi, fy.hi, fz.hi);
     k.fLo = Vec3(fx.lo, fy.lo, fz.lo);
     k.r = s.radius;
@@ -155,9 +201,32 @@ inline SphereSetup sphereSetup(const SphereShape& s, Vec3 origin) {
     // sphereRoots' reject uses f = origin − centre in plain float: twoSum's hi is that very sum.
     return k;
 }
+// sphereSetup's values for rays of a group with origins of their own, lane by lane.
+struct SphereSetupLanes {
+    V3 f, fLo;
+    LaneF reach2;
+    float r;
+    LaneF c;
+};
+inline SphereSetupLanes sphereSetup(const SphereShape& s, const V3& origin) {
+    SphereSetupLanes k;
+    const V3 f0 = origin - s.center;
+    const LaneF margin = 1e-5f * (maxComponent(abs(origin)) + maxComponent(abs(s.center)) + maxComponent(abs(f0)));
+    const LaneF reach = s.radius + margin;
+    k.reach2 = reach * reach;
+    const TwoLanes fx = twoSum(origin.x, splat(-s.center.x));
+    const TwoLanes fy = twoSum(origin.y, splat(-s.center.y));
+    const TwoLanes fz = twoSum(origin.z, splat(-s.center.z));
+    k.f = {fx.hi, fy.hi, fz.hi};
+    k.fLo = {fx.lo, fy.lo, fz.lo};
+    k.r = s.radius;
+    k.c = lengthSquaredMinusSquareAccurate(k.f, k.r) + 2.0f * dot(k.f, k.fLo);
+    return k;
+}
 // Returns the lanes of `live` that hit; tHit holds their t (the nearer root in (0, tMax), else the farther) and,
-// when asked for, normal their hit.normal.
-inline uint64_t sphereHits(const SphereSetup& k, const Group& ray, uint64_t live, LaneF& tHit, V3* normal = nullptr) {
+// when asked for, normal their hit.normal. Setup: SphereSetup (one origin) or SphereSetupLanes.
+template <class Setup>
+inline uint64_t sphereHits(const Setup& k, const Group& ray, uint64_t live, LaneF& tHit, V3* normal = nullptr) {
     const V3& d = ray.d;
     const LaneF dd = dot(d, d);
     const V3 fd = cross(k.f, d);
@@ -165,7 +234,7 @@ inline uint64_t sphereHits(const SphereSetup& k, const Group& ray, uint64_t live
     if (!live) return 0;
     const LaneF a = dd;
     const LaneF b = dot(k.f, d) + dot(k.fLo, d);
-    const float c = k.c;
+    const auto c = k.c;
     const V3 ca = crossAccurate(k.f, d);
     const V3 cl = cross(k.fLo, d);
     const V3 x = {ca.x + cl.x, ca.y + cl.y, ca.z + cl.z};
@@ -174,7 +243,7 @@ inline uint64_t sphereHits(const SphereSetup& k, const Group& ray, uint64_t live
     const V3 l = {lc.x * invA, lc.y * invA, lc.z * invA};
     const LaneF lLength = sqrt(dot(l, l));
     const float r = k.r;
-    const LaneI nearForm = b * b + a * fabsf(c) < a * lLength * (r + lLength);
+    const LaneI nearForm = b * b + a * absOf(c) < a * lLength * (r + lLength);
     const LaneF discriminant = nearForm ? fma(b, b, -a * c) : a * ((r - lLength) * (r + lLength));
     live &= bits(discriminant >= 0.0f);
     if (!live) return 0;
@@ -201,17 +270,20 @@ inline uint64_t sphereHits(const SphereSetup& k, const Group& ray, uint64_t live
 // intersectBox(box, Ray{origin, d}, 0, tMax, hit) lane by lane: the lanes that hit, in tHit their hit.t and in
 // face the face hit, 2·axis + 1 for the + face of the axis, 2·axis for the − face (hit.normal is
 // normalize(objectFromWorld.row[axis] · ±1)).
-inline uint64_t boxHits(const BoxShape& box, Vec3 oWorld, const Group& ray, uint64_t live, LaneF& tHit, LaneI& face) {
-    const Vec3 o = box.objectFromWorld.applyToPoint(oWorld);
+// Origin: a Vec3 (one origin) or V3 (the group's own).
+template <class Origin>
+inline uint64_t boxHits(const BoxShape& box, const Origin& oWorld, const Group& ray, uint64_t live, LaneF& tHit,
+                        LaneI& face) {
+    const Origin o = applyToPoint(box.objectFromWorld, oWorld);
     const V3 d = {dot(box.objectFromWorld.row[0], ray.d), dot(box.objectFromWorld.row[1], ray.d),
                   dot(box.objectFromWorld.row[2], ray.d)};
     LaneF tEnter = splat(-INFINITY), tExit = splat(INFINITY);
     LaneI enterFace = {}, exitFace = {};
     for (int axis = 0; axis < 3; ++axis) {
-        const float oi = o[axis];
+        const auto oi = component(o, axis);
         const LaneF di = axis == 0 ? d.x : (axis == 1 ? d.y : d.z);
         const LaneI parallel = di == 0.0f;
-        if (oi < -0.5f || oi > 0.5f) live &= ~bits(parallel);  // parallel outside the slab: no hit
+        live &= ~bits(parallel & ((asLanes(oi) < -0.5f) | (asLanes(oi) > 0.5f)));  // parallel outside the slab
         const LaneF tLow = (-0.5f - oi) / di;
         const LaneF tHigh = (0.5f - oi) / di;
         const LaneI forward = di > 0.0f;
@@ -230,20 +302,23 @@ inline uint64_t boxHits(const BoxShape& box, Vec3 oWorld, const Group& ray, uint
     face = enterIn ? enterFace : exitFace;
     return live & bits((tEnter <= tExit) & (enterIn | exitIn));
 }
-inline uint64_t boxHits(const BoxShape& box, Vec3 oWorld, const Group& ray, uint64_t live, LaneF& tHit) {
+template <class Origin>
+inline uint64_t boxHits(const BoxShape& box, const Origin& oWorld, const Group& ray, uint64_t live, LaneF& tHit) {
     LaneI face;
     return boxHits(box, oWorld, ray, live, tHit, face);
 }
 
 // intersectCylinder(c, Ray{origin, d}, 0, tMax, hit) lane by lane: the lanes that hit, and in tHit their hit.t.
-inline uint64_t cylinderHits(const CylinderShape& cyl, Vec3 origin, const Group& ray, uint64_t live, LaneF& tHit) {
+template <class Origin>
+inline uint64_t cylinderHits(const CylinderShape& cyl, const Origin& origin, const Group& ray, uint64_t live,
+                             LaneF& tHit) {
     const Vec3 axis = cyl.axis;
     const float r = cyl.radius;
-    const Vec3 f = origin - cyl.base;
+    const Origin f = origin - cyl.base;
     const V3& d = ray.d;
-    const Vec3 fPerp = crossAccurate(axis, f);
+    const Origin fPerp = crossAccurate(axis, f);
     const V3 dPerp = crossAccurate(axis, d);
-    const float fAlong = dot(axis, f);
+    const auto fAlong = dot(axis, f);
     const LaneF dAlong = dot(axis, d);
 
     LaneF tBest = ray.tMax;
@@ -259,7 +334,7 @@ inline uint64_t cylinderHits(const CylinderShape& cyl, Vec3 origin, const Group&
         const LaneI roots = sideLanes & (discriminant >= 0.0f);
         if (bits(roots) & live) {
             const LaneF q = -b - copysign(sqrt(discriminant), b);
-            const float c = dot(fPerp, fPerp) - r * r;
+            const auto c = dot(fPerp, fPerp) - r * r;
             LaneF t0 = q / a;
             LaneF t1 = q != 0.0f ? c / q : t0;
             const LaneI swap = t0 > t1;
@@ -309,7 +384,8 @@ inline InverseDirections inverseDirections(const RayPacket& rays) {
 // out[c]: the rays of `live` that enter child c of the node over (0, tMax[ray]): intersectChildren per ray,
 // (bound − origin)·invDirection with the near plane's bound by the sign of invDirection (the max plane first
 // when it is < 0), the same selects, the same exit widening.
-inline void raysEnteringChildren(const WideBvhNode& node, Vec3 origin, const InverseDirections& inv,
+template <class Origins>
+inline void raysEnteringChildren(const WideBvhNode& node, const Origins& origins, const InverseDirections& inv,
                                  const float* tMaxOfRays, uint64_t live, uint64_t out[kBvhWidth]) {
     for (int c = 0; c < kBvhWidth; ++c) out[c] = 0;
     for (int g = 0; g < kGroups; ++g) {
@@ -319,14 +395,15 @@ inline void raysEnteringChildren(const WideBvhNode& node, Vec3 origin, const Inv
         const LaneF invAxis[3] = {load(inv.axis[0] + o), load(inv.axis[1] + o), load(inv.axis[2] + o)};
         const LaneI maxFirst[3] = {invAxis[0] < 0.0f, invAxis[1] < 0.0f, invAxis[2] < 0.0f};
         const LaneF tMax = load(tMaxOfRays + o);
+        const auto origin = origins.group(g);
         for (int c = 0; c < kBvhWidth; ++c) {
             if (node.child[c] == kBvhEmptyLane) continue;
             LaneF t0 = splat(0.0f), t1 = tMax;
             for (int axis = 0; axis < 3; ++axis) {
-                const float lo = node.bounds[axis][0][c] - origin[axis];
-                const float hi = node.bounds[axis][1][c] - origin[axis];
-                const LaneF tNear = (maxFirst[axis] ? splat(hi) : splat(lo)) * invAxis[axis];
-                const LaneF tFar = (maxFirst[axis] ? splat(lo) : splat(hi)) * invAxis[axis];
+                const LaneF lo = asLanes(node.bounds[axis][0][c] - component(origin, axis));
+                const LaneF hi = asLanes(node.bounds[axis][1][c] - component(origin, axis));
+                const LaneF tNear = (maxFirst[axis] ? hi : lo) * invAxis[axis];
+                const LaneF tFar = (maxFirst[axis] ? lo : hi) * invAxis[axis];
                 t0 = tNear > t0 ? tNear : t0;
                 t1 = tFar < t1 ? tFar : t1;
             }
@@ -334,6 +411,34 @@ inline void raysEnteringChildren(const WideBvhNode& node, Vec3 origin, const Inv
         }
     }
 }
+
+// Where a packet's rays start: one origin for all (SharedOrigin), or one per ray (OwnOrigins over RayOrigins).
+// group(g): the origin of group g's rays, a Vec3 or the lanes' V3; at(i): ray i's.
+struct SharedOrigin {
+    Vec3 origin;
+    Vec3 group(int) const { return origin; }
+    Vec3 at(int) const { return origin; }
+};
+
+}  // namespace packet_detail
+
+// The origins of a packet's rays when each has its own, structure of arrays beside RayPacket.
+struct RayOrigins {
+    alignas(64) float ox[kPacketRays];
+    alignas(64) float oy[kPacketRays];
+    alignas(64) float oz[kPacketRays];
+};
+
+namespace packet_detail {
+
+struct OwnOrigins {
+    const RayOrigins& origins;
+    V3 group(int g) const {
+        const int o = g * kLanes;
+        return {load(origins.ox + o), load(origins.oy + o), load(origins.oz + o)};
+    }
+    Vec3 at(int i) const { return Vec3(origins.ox[i], origins.oy[i], origins.oz[i]); }
+};
 
 // A node of a packet traversal and the rays still to visit it.
 struct PacketEntry {
