@@ -58,16 +58,15 @@ TRAZO_HD bool reflectsLight(const ShadingPoint& sp, const MaterialData& m) {
     return (!isBlack(m.diffuse) || !isBlack(m.specular)) && dot(sp.n, sp.v) > 0.0f;
 }
 
-// The shadow ray from the shading point towards a light sample X, segment (0, tMax), its direction l the unit
-// vector to X; false where Shade is 0 without one (X at the point, or not above its shading normal).
-TRAZO_HD bool aimShadowRay(const ShadingPoint& sp, Vec3 x, Ray& ray, float& tMax) {
+// The shadow ray from the shading point towards a light sample X: l the unit vector to X, leaving from origin
+// over (0, |X − origin|); false where Shade is 0 without one (X at the point, or not above its shading normal).
+TRAZO_HD bool aimShadowRay(const ShadingPoint& sp, Vec3 x, Vec3& l, Vec3& origin) {
     Vec3 toLight = x - sp.p;
     const float dist = length(toLight);
     if (!(dist > 0.0f)) return false;
-    const Vec3 l = toLight / dist;
+    l = toLight / dist;
     if (dot(sp.n, l) <= 0.0f) return false;
-    ray = Ray{sp.rayOrigin(l), l};
-    tMax = length(x - ray.origin);
+    origin = sp.rayOrigin(l);
     return true;
 }
 
@@ -75,12 +74,11 @@ TRAZO_HD bool aimShadowRay(const ShadingPoint& sp, Vec3 x, Ray& ray, float& tMax
 // shadow ray.
 TRAZO_HD Vec3 shadeFromPoint(const SceneView& scene, const ShadingPoint& sp, const PointBrdf& brdf, Vec3 x,
                              Vec3 color, uint32_t& rays) {
-    Ray ray;
-    float tMax;
-    if (!aimShadowRay(sp, x, ray, tMax)) return Vec3(0.0f);  // Shade would be 0: no shadow ray
+    Vec3 l, origin;
+    if (!aimShadowRay(sp, x, l, origin)) return Vec3(0.0f);  // Shade would be 0: no shadow ray
     ++rays;
-    if (occluded(scene, ray, tMax)) return Vec3(0.0f);
-    return color * brdf.eval(ray.direction);
+    if (occluded(scene, Ray{origin, l}, length(x - origin))) return Vec3(0.0f);
+    return color * brdf.eval(l);
 }
 
 // The jittered point of cell s of the light's grid (two draws of rng, u first).
@@ -215,11 +213,14 @@ inline void directPointLightsTogether(const SceneView& scene, const ShadingPoint
         const PointLightData& light = scene.pointLights[k];
         uint64_t aimed = 0;
         for (int i = 0; i < lanesUsed; ++i) {
-            Ray ray{Vec3(0.0f), Vec3(0.0f, 0.0f, 1.0f)};  // lanes not aimed are never traced
+            Vec3 l(0.0f, 0.0f, 1.0f), origin(0.0f);  // lanes not aimed are never traced
             float tMax = 0.0f;
-            if ((reflecting >> i & 1u) && aimShadowRay(points[i], light.position, ray, tMax)) aimed |= 1ull << i;
-            origins.ox[i] = ray.origin.x, origins.oy[i] = ray.origin.y, origins.oz[i] = ray.origin.z;
-            packet.dx[i] = ray.direction.x, packet.dy[i] = ray.direction.y, packet.dz[i] = ray.direction.z;
+            if ((reflecting >> i & 1u) && aimShadowRay(points[i], light.position, l, origin)) {
+                tMax = length(light.position - origin);
+                aimed |= 1ull << i;
+            }
+            origins.ox[i] = origin.x, origins.oy[i] = origin.y, origins.oz[i] = origin.z;
+            packet.dx[i] = l.x, packet.dy[i] = l.y, packet.dz[i] = l.z;
             packet.tMax[i] = tMax;
         }
         rays += (uint32_t)__builtin_popcountll(aimed);
