@@ -15,8 +15,6 @@
 
 namespace trazo {
 
-// What a direction's ray found at Q, an object's `hit` (j: the direction's index in the pass's block): Q's direct
-// light plus its emission, Direct(Q) + Ke(Q).
 // The shading point at Q, an object's `hit` along `ray`, and in mq its material with textures applied.
 TRAZO_HD ShadingPoint shadingPointAt(const SceneView& scene, const Ray& ray, const SurfaceHit& hit, MaterialData& mq) {
     const ObjectRef& o = scene.objects[hit.object];
@@ -26,6 +24,8 @@ TRAZO_HD ShadingPoint shadingPointAt(const SceneView& scene, const Ray& ray, con
     return facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), ray.direction, sq);
 }
 
+// What a direction's ray found at Q, an object's `hit` (j: the direction's index in the pass's block): Q's direct
+// light plus its emission, Direct(Q) + Ke(Q).
 template <FeatureMask F>
 TRAZO_HD Vec3 lightArrivingFrom(const SceneView& scene, const Ray& ray, const SurfaceHit& hit, const StrataKey& atQ,
                                 const StrataBlocks& blocks, uint32_t j, SampleStream& rng, uint32_t& rays) {
@@ -68,7 +68,7 @@ TRAZO_HD Vec3 indirectLightOneByOne(const SceneView& scene, const ShadingPoint& 
 }
 
 #if TRAZO_SHADOW_PACKETS
-constexpr uint32_t kMinIndirectPacket = 4;  // fewer directions a pass are traced one by one
+constexpr uint32_t kMinIndirectPacket = 4;  // fewer directions a pass are traced one by one (as kMinShadowPacket)
 
 // Whether indirectLightTogether serves the scene: objects the packet lanes test (no meshes or CSG solids, whose
 // rays would all be traced again) and, F without area lights, a direct light of point lights only, which draws
@@ -90,8 +90,8 @@ inline Vec3 indirectLightTogether(const SceneView& scene, const ShadingPoint& sp
     static_assert((F & kFeatureAreaLights) == 0, "Direct(Q) of point lights only: directPointLightsTogether");
     const OrenNayarView view = orenNayarView(sp.n, sp.v, m.roughness);
     RayPacket packet;
-    // Storage without construction (its objects begin where they are written): zeroing 64 of each per shading
-    // point cost more than the packets saved.
+    // Storage without construction (its objects begin where they are written): constructing 64 of each per
+    // shading point zeroed their vectors, a loop that showed in the profile of scene9_indirect_point.
     alignas(TracedRay) unsigned char tracedBytes[sizeof(TracedRay) * kPacketRays];
     TracedRay* traced = reinterpret_cast<TracedRay*>(tracedBytes);
     alignas(ShadingPoint) unsigned char pointBytes[sizeof(ShadingPoint) * kPacketRays];  // Q, where atObject

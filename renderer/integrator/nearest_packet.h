@@ -1,11 +1,12 @@
 // Host only: the nearest object along each of up to 64 rays from one origin (a pinhole camera's rays through a
-// block of pixels, a shading point's indirect directions) traced together through the top-level BVH, spheres, boxes and cylinders in SIMD lanes
-// (packet_lanes.h). A ray's answer is intersectScene's object part bit for bit. Why it is: an object's hit t is
-// its nearest root in (0, ∞) whatever the bound it is tested with, so the scalar traversal, which prunes only
-// what cannot hold anything nearer than its running bound, returns the object of least t; so does this one,
-// whose bound per ray is never below that least t. Only the order of visits differs, and with it the winner of
-// a tie (two objects at the same t): those rays, and any that reach a mesh or CSG solid, are left to the
-// scalar intersectScene (NearestHits::redo); tracePacket completes every answer to intersectScene's.
+// block of pixels, a shading point's indirect directions) traced together through the top-level BVH, spheres,
+// boxes and cylinders in SIMD lanes (packet_lanes.h). A ray's answer is intersectScene's object part bit for
+// bit. Why it is: an object's hit t is its nearest root in (0, ∞) whatever the bound it is tested with, so the
+// scalar traversal, which prunes only what cannot hold anything nearer than its running bound, returns the object
+// of least t; so does this one, whose bound per ray is never below that least t. Only the order of visits
+// differs, and with it the winner of a tie (two objects at the same t): those rays, and any that reach a mesh or
+// CSG solid, are left to the scalar intersectScene (NearestHits::redo); tracePacket completes every answer to
+// intersectScene's.
 #pragma once
 
 #include "integrator/packet_lanes.h"

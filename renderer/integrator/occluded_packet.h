@@ -8,6 +8,8 @@
 // area light's cells in the same lanes (integrator/direct_light.h, shadeCellsTogether).
 #pragma once
 
+#include <type_traits>
+
 #include "integrator/packet_lanes.h"
 #include "objects/rectangle.h"
 

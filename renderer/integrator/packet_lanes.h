@@ -14,7 +14,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <type_traits>
 
 #include "core/rng.h"
 #include "integrator/scene_intersect.h"
@@ -142,7 +141,8 @@ inline LaneF maxOf(LaneF a, LaneF b) { return a > b ? a : b; }
 inline LaneF maxComponent(const V3& a) { return maxOf(a.x, maxOf(a.y, a.z)); }
 inline V3 abs(const V3& a) { return {fabs(a.x), fabs(a.y), fabs(a.z)}; }
 inline V3 applyToPoint(const Affine3& m, const V3& p) {
-    return {dot(m.row[0], p) + m.translation.x, dot(m.row[1], p) + m.translation.y, dot(m.row[2], p) + m.translation.z};
+    return {dot(m.row[0], p) + m.translation.x, dot(m.row[1], p) + m.translation.y,
+            dot(m.row[2], p) + m.translation.z};
 }
 inline Vec3 applyToPoint(const Affine3& m, Vec3 p) { return m.applyToPoint(p); }
 struct TwoLanes {
@@ -201,6 +201,7 @@ inline SphereSetup sphereSetup(const SphereShape& s, Vec3 origin) {
     // sphereRoots' reject uses f = origin − centre in plain float: twoSum's hi is that very sum.
     return k;
 }
+
 // sphereSetup's values for rays of a group with origins of their own, lane by lane.
 struct SphereSetupLanes {
     V3 f, fLo;
