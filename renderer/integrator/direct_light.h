@@ -209,6 +209,11 @@ inline void directPointLightsTogether(const SceneView& scene, const ShadingPoint
     RayOrigins origins;
     const int lanesUsed = (64 - __builtin_clzll(reflecting) + packet_detail::kLanes - 1) / packet_detail::kLanes *
                           packet_detail::kLanes;
+    for (int i = lanesUsed; i < kPacketRays; ++i) {  // never traced, but read whole by the packet's set-up
+        origins.ox[i] = origins.oy[i] = origins.oz[i] = 0.0f;
+        packet.dx[i] = packet.dy[i] = packet.tMax[i] = 0.0f;
+        packet.dz[i] = 1.0f;
+    }
     for (uint32_t k = 0; k < scene.pointLights.count; ++k) {
         const PointLightData& light = scene.pointLights[k];
         uint64_t aimed = 0;
