@@ -90,16 +90,10 @@ inline Vec3 indirectLightTogether(const SceneView& scene, const ShadingPoint& sp
     static_assert((F & kFeatureAreaLights) == 0, "Direct(Q) of point lights only: directPointLightsTogether");
     const OrenNayarView view = orenNayarView(sp.n, sp.v, m.roughness);
     RayPacket packet;
-    // Storage without construction (its objects begin where they are written): constructing 64 of each per
-    // shading point zeroed their vectors, a loop that showed in the profile of scene9_indirect_point.
-    alignas(TracedRay) unsigned char tracedBytes[sizeof(TracedRay) * kPacketRays];
-    TracedRay* traced = reinterpret_cast<TracedRay*>(tracedBytes);
-    alignas(ShadingPoint) unsigned char pointBytes[sizeof(ShadingPoint) * kPacketRays];  // Q, where atObject
-    ShadingPoint* points = reinterpret_cast<ShadingPoint*>(pointBytes);
-    alignas(MaterialData) unsigned char materialBytes[sizeof(MaterialData) * kPacketRays];  // Q's, where atObject
-    MaterialData* materials = reinterpret_cast<MaterialData*>(materialBytes);
-    alignas(Vec3) unsigned char arrivingBytes[sizeof(Vec3) * kPacketRays];
-    Vec3* arriving = reinterpret_cast<Vec3*>(arrivingBytes);
+    PerRay<TracedRay> traced;
+    PerRay<ShadingPoint> points;     // Q, where atObject
+    PerRay<MaterialData> materials;  // Q's, where atObject
+    PerRay<Vec3> arriving;
     Vec3 sum(0.0f);
     for (uint32_t start = 0; start < directions.size; start += kPacketRays) {
         const uint32_t count = directions.size - start < kPacketRays ? directions.size - start : kPacketRays;
@@ -116,16 +110,16 @@ inline Vec3 indirectLightTogether(const SceneView& scene, const ShadingPoint& sp
             packet.tMax[i] = INFINITY;
         }
         rays += (uint32_t)__builtin_popcountll(active);
-        tracePacket(scene, sp.above, packet, active, traced);
+        tracePacket(scene, sp.above, packet, active, traced.data());
         uint64_t atObject = 0;  // the directions that found an object (not the sky, nor a light)
         for (uint64_t left = active; left; left &= left - 1) {
             const int i = __builtin_ctzll(left);
             const TracedRay& r = traced[i];
             if (!r.found || r.hit.object == kNoObject) continue;
-            new (points + i) ShadingPoint(shadingPointAt(scene, r.ray, r.hit, materials[i]));
+            new (points.data() + i) ShadingPoint(shadingPointAt(scene, r.ray, r.hit, materials[i]));
             atObject |= 1ull << i;
         }
-        directPointLightsTogether(scene, points, materials, atObject, arriving, rays);  // Direct(Q)
+        directPointLightsTogether(scene, points.data(), materials.data(), atObject, arriving.data(), rays);  // Direct(Q)
         for (uint64_t left = atObject; left; left &= left - 1) {
             const int i = __builtin_ctzll(left);
             const Vec3 fromQ = arriving[i] + materials[i].emissive;  // Direct(Q) + Ke(Q)

@@ -1,5 +1,6 @@
 // Host only: the nearest object along each of up to 64 rays from one origin (a pinhole camera's rays through a
-// block of pixels, a shading point's indirect directions) traced together through the top-level BVH, spheres,
+// block of pixels, a shading point's indirect directions), or each from its own (the indirect directions of a
+// block's shading points), traced together through the top-level BVH, spheres,
 // boxes and cylinders in SIMD lanes (packet_lanes.h). A ray's answer is intersectScene's object part bit for
 // bit. Why it is: an object's hit t is its nearest root in (0, ∞) whatever the bound it is tested with, so the
 // scalar traversal, which prunes only what cannot hold anything nearer than its running bound, returns the object
@@ -8,6 +9,8 @@
 // CSG solid, are left to the scalar intersectScene (NearestHits::redo); tracePacket completes every answer to
 // intersectScene's.
 #pragma once
+
+#include <type_traits>
 
 #include "integrator/packet_lanes.h"
 
@@ -52,20 +55,31 @@ inline void takeNearer(uint64_t hits, int offset, LaneF tHit, const LaneI* boxFa
     }
 }
 
-// Object `index` against the rays of `live`.
-inline void nearestOfObject(const SceneView& scene, uint32_t index, Vec3 origin, RayPacket& rays, uint64_t live,
-                            NearestHits& out, uint64_t& ties) {
+// Object `index` against the rays of `live`. Origins: SharedOrigin or OwnOrigins (packet_lanes.h).
+template <class Origins>
+inline void nearestOfObject(const SceneView& scene, uint32_t index, const Origins& origins, RayPacket& rays,
+                            uint64_t live, NearestHits& out, uint64_t& ties) {
     const ObjectRef& o = scene.objects[index];
     LaneF tHit;
     switch (o.kind) {
         case ObjectKind::Sphere: {
-            const SphereSetup k = sphereSetup(scene.spheres[o.index], origin);
-            for (int g = 0; g < kGroups; ++g) {
-                const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                if (!lanes) continue;
+            const SphereShape& sphere = scene.spheres[o.index];
+            auto test = [&](int g, uint64_t lanes, const auto& setup) {
                 V3 normal;
-                const uint64_t hits = sphereHits(k, loadGroup(rays, g), lanes, tHit, &normal);
+                const uint64_t hits = sphereHits(setup, loadGroup(rays, g), lanes, tHit, &normal);
                 takeNearer(hits, g * kLanes, tHit, nullptr, &normal, index, out, rays.tMax, ties);
+            };
+            if constexpr (std::is_same_v<Origins, SharedOrigin>) {
+                const SphereSetup k = sphereSetup(sphere, origins.origin);
+                for (int g = 0; g < kGroups; ++g) {
+                    const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
+                    if (lanes) test(g, lanes, k);
+                }
+            } else {
+                for (int g = 0; g < kGroups; ++g) {
+                    const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
+                    if (lanes) test(g, lanes, sphereSetup(sphere, origins.group(g)));
+                }
             }
             return;
         }
@@ -75,7 +89,7 @@ inline void nearestOfObject(const SceneView& scene, uint32_t index, Vec3 origin,
                 const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
                 if (!lanes) continue;
                 LaneI face;
-                const uint64_t hits = boxHits(box, origin, loadGroup(rays, g), lanes, tHit, face);
+                const uint64_t hits = boxHits(box, origins.group(g), loadGroup(rays, g), lanes, tHit, face);
                 takeNearer(hits, g * kLanes, tHit, &face, nullptr, index, out, rays.tMax, ties);
             }
             return;
@@ -85,7 +99,7 @@ inline void nearestOfObject(const SceneView& scene, uint32_t index, Vec3 origin,
             for (int g = 0; g < kGroups; ++g) {
                 const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
                 if (!lanes) continue;
-                const uint64_t hits = cylinderHits(cyl, origin, loadGroup(rays, g), lanes, tHit);
+                const uint64_t hits = cylinderHits(cyl, origins.group(g), loadGroup(rays, g), lanes, tHit);
                 takeNearer(hits, g * kLanes, tHit, nullptr, nullptr, index, out, rays.tMax, ties);
             }
             return;
@@ -96,12 +110,9 @@ inline void nearestOfObject(const SceneView& scene, uint32_t index, Vec3 origin,
     }
 }
 
-}  // namespace packet_detail
-
-// The nearest object of each ray of `active` (bit i: ray i, tMax[i] = INFINITY on entry; used as the running
-// bound), as intersectScene finds it, or kNoObject; rays in out.redo have no answer here.
-inline void nearestPacket(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, NearestHits& out) {
-    using namespace packet_detail;
+template <class Origins>
+inline void nearestPacketFrom(const SceneView& scene, const Origins& origins, RayPacket& rays, uint64_t active,
+                              NearestHits& out) {
     for (int i = 0; i < kPacketRays; ++i) {
         out.object[i] = kNoObject;
         out.t[i] = INFINITY;
@@ -120,16 +131,16 @@ inline void nearestPacket(const SceneView& scene, Vec3 origin, RayPacket& rays, 
         if (!live) continue;
         if (bvhIsLeaf(e.ref)) {
             const uint32_t first = bvhLeafFirst(e.ref), end = first + bvhLeafCount(e.ref);
-            for (uint32_t i = first; i < end; ++i) nearestOfObject(scene, i, origin, rays, live & ~out.redo, out, ties);
+            for (uint32_t i = first; i < end; ++i) nearestOfObject(scene, i, origins, rays, live & ~out.redo, out, ties);
             continue;
         }
         const WideBvhNode& node = nodes[e.ref];
         uint64_t childRays[kBvhWidth];
-        raysEnteringChildren(node, SharedOrigin{origin}, inv, rays.tMax, live, childRays);
+        raysEnteringChildren(node, origins, inv, rays.tMax, live, childRays);
         // Nearer children later on the stack, so that they are visited first and tighten the bounds: ordered
         // by the entry distance of their boxes' centres along the packet's first ray.
         const int first = __builtin_ctzll(live);
-        const Vec3 d(rays.dx[first], rays.dy[first], rays.dz[first]);
+        const Vec3 d(rays.dx[first], rays.dy[first], rays.dz[first]), origin = origins.at(first);
         float key[kBvhWidth];
         int order[kBvhWidth];
         int count = 0;
@@ -149,17 +160,17 @@ inline void nearestPacket(const SceneView& scene, Vec3 origin, RayPacket& rays, 
     for (uint64_t m = out.redo; m; m &= m - 1) out.object[__builtin_ctzll(m)] = kNoObject;
 }
 
-// The rays of `active` in `rays` (directions; tMax INFINITY, overwritten) from `origin`: out[i] is ray i and
-// intersectScene(scene, ray i, INFINITY)'s answer.
-inline void tracePacket(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, TracedRay* out) {
+template <class Origins>
+inline void tracePacketFrom(const SceneView& scene, const Origins& origins, RayPacket& rays, uint64_t active,
+                            TracedRay* out) {
     NearestHits nearest;
-    nearestPacket(scene, origin, rays, active, nearest);
+    nearestPacketFrom(scene, origins, rays, active, nearest);
     uint32_t faceObject = kNoObject;  // the box face whose normal was computed last: most rays of a block share it
     int lastFace = -1;
     Vec3 faceNormal;
     for (uint64_t m = active; m; m &= m - 1) {
         const int i = __builtin_ctzll(m);
-        const Ray ray{origin, Vec3(rays.dx[i], rays.dy[i], rays.dz[i])};
+        const Ray ray{origins.at(i), Vec3(rays.dx[i], rays.dy[i], rays.dz[i])};
         TracedRay& c = out[i];
         c.ray = ray;
         const uint32_t object = nearest.object[i];
@@ -195,6 +206,26 @@ inline void tracePacket(const SceneView& scene, Vec3 origin, RayPacket& rays, ui
         }
         if (intersectAreaLights(scene, ray, tMax, c.hit)) c.found = true;
     }
+}
+
+}  // namespace packet_detail
+
+// The nearest object of each ray of `active` (bit i: ray i, tMax[i] = INFINITY on entry; used as the running
+// bound), as intersectScene finds it, or kNoObject; rays in out.redo have no answer here.
+inline void nearestPacket(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, NearestHits& out) {
+    packet_detail::nearestPacketFrom(scene, packet_detail::SharedOrigin{origin}, rays, active, out);
+}
+
+// The rays of `active` in `rays` (directions; tMax INFINITY, overwritten) from `origin`: out[i] is ray i and
+// intersectScene(scene, ray i, INFINITY)'s answer.
+inline void tracePacket(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, TracedRay* out) {
+    packet_detail::tracePacketFrom(scene, packet_detail::SharedOrigin{origin}, rays, active, out);
+}
+
+// The same for rays with origins of their own: out[i] is Ray{origin i, direction i} and its answer.
+inline void tracePacket(const SceneView& scene, const RayOrigins& origins, RayPacket& rays, uint64_t active,
+                        TracedRay* out) {
+    packet_detail::tracePacketFrom(scene, packet_detail::OwnOrigins{origins}, rays, active, out);
 }
 
 }  // namespace trazo

@@ -115,6 +115,62 @@ TEST(NearestPacket, CameraHitsMatchIntersectSceneOnEveryIsa) {
     EXPECT_GT(compared, 0u);
 }
 
+// Rays each with an origin of its own, as a block of shading points sends its indirect directions: origins on
+// surfaces (moved off them as ShadingPoint does, and exactly on them), in space and at one shared point, some
+// lanes left out; each answer is intersectScene's for Ray{origin i, direction i}.
+TEST(NearestPacket, OwnOriginsMatchIntersectScene) {
+    uint64_t hitsSeen = 0, missesSeen = 0, compared = 0;
+    for (uint32_t seed = 1; seed <= 40; ++seed) {
+        const test::RandomScene scene = test::makeScene(seed, kExtras);
+        std::mt19937 rng(seed * 7919u);
+        std::uniform_real_distribution<float> pos(-6.0f, 6.0f), unit(-1.0f, 1.0f);
+        for (int variant = 0; variant < 12; ++variant) {
+            RayPacket rays;
+            RayOrigins origins;
+            const uint64_t active = makeRays(scene.view, Vec3(0.0f, 0.0f, 12.0f), rng, variant % 3 == 2, rays);
+            for (int i = 0; i < kPacketRays; ++i) {
+                Vec3 origin(0.0f, 0.0f, 12.0f), normal;
+                switch ((i + variant) % 4) {
+                    case 0: origin = Vec3(pos(rng), pos(rng), pos(rng)); break;
+                    case 1: origin = test::surfacePoint(scene.view, rng, normal); break;
+                    case 2: {
+                        const Vec3 p = test::surfacePoint(scene.view, rng, normal);
+                        if (!isBlack(normal)) origin = offsetRayOrigin(p, abs(p) * 1e-6f, normal, normal);
+                        else origin = p;
+                        // Directions about that normal, as indirect light sends them.
+                        Vec3 d = normalize(Vec3(unit(rng), unit(rng), unit(rng)));
+                        if (!isBlack(normal) && dot(d, normal) < 0.0f) d = -d;
+                        rays.dx[i] = d.x, rays.dy[i] = d.y, rays.dz[i] = d.z;
+                        break;
+                    }
+                    default: break;  // the shared point
+                }
+                origins.ox[i] = origin.x, origins.oy[i] = origin.y, origins.oz[i] = origin.z;
+            }
+            bool found[kPacketRays];
+            SurfaceHit expected[kPacketRays];
+            for (int i = 0; i < kPacketRays; ++i) {
+                if (!(active >> i & 1)) continue;
+                const Ray ray{Vec3(origins.ox[i], origins.oy[i], origins.oz[i]), Vec3(rays.dx[i], rays.dy[i], rays.dz[i])};
+                found[i] = intersectScene(scene.view, ray, INFINITY, expected[i]);
+                hitsSeen += found[i];
+                missesSeen += !found[i];
+            }
+            TracedRay got[kPacketRays];
+            tracePacket(scene.view, origins, rays, active, got);
+            for (int i = 0; i < kPacketRays; ++i) {
+                if (!(active >> i & 1)) continue;
+                expectSameHit(scene.view, got[i], found[i], expected[i], "own origins", seed, i);
+                ASSERT_EQ(std::memcmp(&got[i].ray.origin.x, &origins.ox[i], sizeof(float)), 0);
+                ++compared;
+            }
+        }
+    }
+    EXPECT_GT(hitsSeen, 10000u);
+    EXPECT_GT(missesSeen, 3000u);
+    EXPECT_GT(compared, 25000u);
+}
+
 // Ties are left to intersectScene; a unique nearest object is the packet's own answer.
 TEST(NearestPacket, TiesAreRedoneAndOthersAnswered) {
     const test::RandomScene scene = test::makeScene(5, kExtras);

@@ -10,6 +10,7 @@
 #include "backends/cpu/cpu_kernels.h"
 #include "integrator/sample_variants.h"
 #if TRAZO_SHADOW_PACKETS
+#include "integrator/camera_block.h"
 #include "integrator/camera_packet.h"
 #endif
 
@@ -53,6 +54,21 @@ __attribute__((flatten)) uint64_t renderTilePassesInPackets(const SceneView& sce
             aimCameraRays(frame.camera, pixelX, pixelY, packet);  // centreCameraRay of each pixel
             for (int i = 0; i < kPacketRays; ++i) packet.tMax[i] = INFINITY;
             tracePacket(scene, frame.camera.origin, packet, active, hits);
+            if constexpr (blockShadingServes<F>()) {  // the block's pixels shaded together (camera_block.h)
+                PerRay<Vec3> color;
+                uint32_t blockRays = 0;
+                for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
+                    // Without indirect light every pass adds the same colours: shaded once.
+                    if (pass == firstPass || !directOnlySample<F>())
+                        blockRays = shadeBlock<F>(scene, frame, hits, imageX, imageY, active, pass, color.data());
+                    for (uint64_t m = active; m; m &= m - 1) {
+                        const int i = __builtin_ctzll(m);
+                        accum[accumIndex[i]].add(color[i], frame.inSecondHalf(pass), frame.sampleWeight);
+                    }
+                    rays += blockRays;
+                }
+                continue;
+            }
             for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
                 for (uint64_t m = active; m; m &= m - 1) {
                     const int i = __builtin_ctzll(m);
@@ -67,11 +83,13 @@ __attribute__((flatten)) uint64_t renderTilePassesInPackets(const SceneView& sce
     return rays;
 }
 
-// None with indirect light: its camera rays are a small share of the rays, and packets there cost more than they
-// saved (scene9_indirect_point: this translation unit's code for them inlined less of the indirect rays' work).
+// With indirect light only where the block is shaded together: elsewhere its camera rays are a small share of the
+// rays, and packets there cost more than they saved (scene9_indirect_point: this translation unit's code for them
+// inlined less of the indirect rays' work).
 template <FeatureMask F>
 struct PacketTileVariant {
-    static constexpr TileRenderFn value = (F & kFeatureIndirect) ? nullptr : &renderTilePassesInPackets<F>;
+    static constexpr TileRenderFn value =
+        (F & kFeatureIndirect) && !blockShadingServes<F>() ? nullptr : &renderTilePassesInPackets<F>;
 };
 
 void tracePacketEntry(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, TracedRay* out) {
