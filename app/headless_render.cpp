@@ -169,7 +169,8 @@ void recordOutcome(RenderStats& stats, const CommandLine& options, const RenderO
     stats.reachedTarget = outcome.reachedTarget;
     stats.estimatedRelError = estimate.relError;
     stats.probePixels = estimate.probePixels;
-    stats.estimateBalanced = estimate.available && (estimate.probePixels > 0 || halvesBalanced);
+    stats.estimateBalanced = estimate.available && (estimate.exact || estimate.probePixels > 0 || halvesBalanced);
+    stats.noSamplingNoise = estimate.exact;
 }
 
 // The image's memory, sized up front: refused here, before any pass, rather than after the render. Reserves
@@ -292,7 +293,7 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     }
     const PassRange done{plan.range.first, plan.range.first + outcome.passes};
     const bool signalled = stopRequested.load() && done.end < plan.range.end;
-    const ErrorEstimate estimate = estimateRenderError(*backend, outcome.probe, accum);  // into the reserved capacity
+    const ErrorEstimate estimate = estimateRenderError(*backend, limits, outcome.probe, accum);  // into the reserved capacity
     recordOutcome(stats, options, outcome, estimate, halvesBalanced(limits.cyclePasses, done));
 
     const auto writeStart = std::chrono::steady_clock::now();

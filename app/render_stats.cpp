@@ -36,7 +36,9 @@ std::string formatStatsSummary(const RenderStats& s) {
                   s.blocks.c_str(), s.fixedGrid ? ", the fixed grid" : "", (unsigned long long)s.rays,
                   s.mraysPerSecond(), s.backend.c_str(), s.device.c_str());
     std::string out = buf;
-    if (std::isfinite(s.estimatedRelError) && s.probePixels > 0) {
+    if (s.noSamplingNoise) {
+        std::snprintf(buf, sizeof buf, "relative error 0 (no sampling noise: every pass is the same image)");
+    } else if (std::isfinite(s.estimatedRelError) && s.probePixels > 0) {
         std::snprintf(buf, sizeof buf, "estimated relative error %.3g%% (error probe of %u pixels)",
                       100.0 * s.estimatedRelError, s.probePixels);
     } else if (std::isfinite(s.estimatedRelError)) {
@@ -82,6 +84,7 @@ std::string formatStatsJson(const RenderStats& s) {
     j.add("blocks", jsonString(s.blocks));
     j.add("estimated_rel_error", jsonNumber(s.estimatedRelError));
     j.add("estimate_balanced", s.estimateBalanced ? "true" : "false");
+    j.add("no_sampling_noise", s.noSamplingNoise ? "true" : "false");
     j.add("error_probe_pixels", std::to_string(s.probePixels));
     j.add("target_error", jsonNumber(s.targetError));
     j.add("reached_target", s.reachedTarget ? "true" : "false");

@@ -26,6 +26,7 @@ struct RenderStats {
     double estimatedRelError = NAN;     // error_probe.h, or error_estimate.h's halves; NaN when neither can tell
     uint32_t probePixels = 0;           // the error probe's pixels (0: estimated from the halves)
     bool estimateBalanced = false;      // unbiased: from the probe, or from halves of whole 2-cycle windows
+    bool noSamplingNoise = false;       // every pass is the same image: the error is 0 exactly
     double targetError = 0.0;           // --target-error (0 = none)
     bool reachedTarget = false;
 

@@ -174,5 +174,38 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
     EXPECT_EQ(jsonNumber(json, "spp"), 1.0) << json;
 }
 
+// A render that draws no random number (point light, one centred position) states 0 exactly, draws no probe,
+// and meets any target error with its first pass.
+TEST(ConvergenceCli, ANoiselessRenderStatesZeroWithoutAProbe) {
+    const std::string scene = sourcePath("scenes/scene1_point.scene");
+    const std::string out = tempPath("cli_point.png"), stats = tempPath("cli_point.json");
+    std::string errors;
+    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --width 64 --height 48 --stats " + stats, errors), 0)
+        << errors;
+    std::string json = readFileText(stats);
+    EXPECT_EQ(jsonNumber(json, "estimated_rel_error"), 0.0) << json;
+    EXPECT_EQ(jsonNumber(json, "error_probe_pixels"), 0.0) << json;
+    EXPECT_NE(json.find("\"no_sampling_noise\": true"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"estimate_balanced\": true"), std::string::npos) << json;
+    EXPECT_NE(errors.find("relative error 0 (no sampling noise"), std::string::npos) << errors;
+    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --width 64 --height 48 --target-error 0.0001 --quiet "
+                           "--stats " + stats,
+                       errors),
+              0)
+        << errors;
+    json = readFileText(stats);
+    EXPECT_NE(json.find("\"reached_target\": true"), std::string::npos) << json;
+    EXPECT_EQ(jsonNumber(json, "spp"), 1.0) << json;
+    // A scene with noise keeps its probe.
+    ASSERT_EQ(runTrazo("--render " + sourcePath("scenes/scene1_area.scene") + " -o " + out +
+                           " --width 64 --height 48 --quiet --stats " + stats,
+                       errors),
+              0)
+        << errors;
+    json = readFileText(stats);
+    EXPECT_GT(jsonNumber(json, "error_probe_pixels"), 0.0) << json;
+    EXPECT_NE(json.find("\"no_sampling_noise\": false"), std::string::npos) << json;
+}
+
 }  // namespace
 }  // namespace trazo::test

@@ -51,6 +51,16 @@ ErrorEstimate estimateRenderError(Backend& backend, const ErrorProbe& probe, std
     return estimateErrorWithProbe(accum, probe, probeAccum);
 }
 
+ErrorEstimate estimateRenderError(Backend& backend, const RenderLimits& limits, const ErrorProbe& probe,
+                                  std::vector<AccumPixel>& accum) {
+    ErrorEstimate e = estimateRenderError(backend, probe, accum);
+    if (limits.noiseless && !accum.empty()) {
+        e.available = e.exact = true;
+        e.rmse = e.relError = 0.0;
+    }
+    return e;
+}
+
 RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, const RenderLimits& limits,
                                 const std::function<void(const RenderProgress&)>& onProgress) {
     using Clock = std::chrono::steady_clock;
@@ -66,7 +76,7 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
     std::vector<AccumPixel> accum;
 
     RenderOutcome out;
-    bool probed = limits.errorProbe;
+    bool probed = limits.errorProbe && !limits.noiseless;
     auto stopped = [&] { return limits.stop && limits.stop->load(); };
     double batchSeconds = kBatchSeconds;
     while (out.passes < maxPasses && !stopped()) {
@@ -88,6 +98,12 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
         batches.finished(count, elapsed() - batchStart);
         const double t = elapsed();
 
+        if (limits.noiseless && limits.targetError > 0.0) {  // the error is 0 from the first pass
+            out.estimatedRelError = 0.0;
+            out.reachedTarget = true;
+            if (onProgress) onProgress(RenderProgress{out.passes, out.passes, t});
+            break;
+        }
         if (targeted && batches.estimateDue()) {
             const ErrorEstimate e = estimateRenderError(backend, out.probe, accum);
             out.estimatedRelError = e.relError;

@@ -47,6 +47,9 @@ struct RenderLimits {
     // Estimate the error with a probe (render/error_probe.h; the backend must have one): drawn after the first
     // pass, then rendered beside the image in every batch; the target error is checked from the first pass.
     bool errorProbe = false;
+    // Every pass is the same image (noSamplingNoise): no probe, the error is 0 exactly, and a target error is met
+    // by the first pass.
+    bool noiseless = false;
     // When set and true (a signal handler sets it), the render stops after the current batch.
     const std::atomic<bool>* stop = nullptr;
 };
@@ -70,6 +73,9 @@ struct RenderOutcome {
 // The render's error now: from the probe when there is one, otherwise from the halves. Leaves the image's
 // accumulation in `accum`.
 ErrorEstimate estimateRenderError(Backend& backend, const ErrorProbe& probe, std::vector<AccumPixel>& accum);
+// The same for a render of limits: 0 exactly where limits.noiseless (ErrorEstimate::exact).
+ErrorEstimate estimateRenderError(Backend& backend, const RenderLimits& limits, const ErrorProbe& probe,
+                                  std::vector<AccumPixel>& accum);
 
 RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, const RenderLimits& limits,
                                 const std::function<void(const RenderProgress&)>& onProgress = {});

@@ -9,6 +9,7 @@ RenderPlan planRender(const RenderRequest& request, const Scene& scene, const Sc
     plan.hostBytes = plan.pixels() * kHostBytesPerPixel;
     plan.blocks = request.blocks.value_or(headlessBlocks(arrays));
     plan.fullCycle = fullCyclePasses(arrays, plan.blocks);
+    plan.noiseless = noSamplingNoise(arrays);
     const uint32_t cameraPasses = cameraPathPasses(arrays, plan.blocks);
     const bool openEnded = request.seconds > 0 || request.targetError > 0;
     plan.defaultPasses = !request.spp && !request.passes;
@@ -27,14 +28,15 @@ RenderLimits RenderPlan::limits(const RenderRequest& request, bool errorProbe) c
     l.seconds = request.seconds;
     l.targetError = request.targetError;
     l.cyclePasses = fullCycle;
-    l.errorProbe = !request.partial && errorProbe;
+    l.errorProbe = !request.partial && errorProbe && !noiseless;
+    l.noiseless = noiseless;
     l.passes = range.count();
     l.firstPass = range.first;
     return l;
 }
 
 std::string targetErrorProblem(const RenderLimits& limits) {
-    if (limits.targetError <= 0 || limits.errorProbe || splitsHalves(limits.cyclePasses)) return "";
+    if (limits.targetError <= 0 || limits.noiseless || limits.errorProbe || splitsHalves(limits.cyclePasses)) return "";
     return "this scene's strata do not repeat within " + std::to_string(kMaxCyclePasses) +
            " passes, so its error cannot be estimated; use --spp or --time";
 }

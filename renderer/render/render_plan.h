@@ -42,6 +42,7 @@ struct RenderPlan {
     bool openEndedPartial = false;  // a partial render that only the time or the target error ends
     uint64_t hostBytes = 0;         // width · height · kHostBytesPerPixel
     std::string note;               // said before a long render ("" for none: a time limit bounds it already)
+    bool noiseless = false;         // noSamplingNoise: the error is 0, and no probe is drawn
 
     uint64_t pixels() const { return uint64_t(width) * height; }
     // The progressive render's limits; `errorProbe`: whether the backend has a probe (partial renders take

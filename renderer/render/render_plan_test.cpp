@@ -100,6 +100,35 @@ TEST(RenderPlan, TargetErrorNeedsAProbeOrHalves) {
     limits.targetError = 0;
     limits.cyclePasses = kMaxCyclePasses;
     EXPECT_EQ(targetErrorProblem(limits), "");
+    limits.targetError = 0.01;
+    limits.noiseless = true;  // the error is 0: nothing to estimate
+    EXPECT_EQ(targetErrorProblem(limits), "");
+}
+
+// Only the point-light-only variant at one centred position through a pinhole draws nothing: any of area
+// lights, indirect light, a glossy or mirror reflection, transparency, antialiasing or a lens makes noise (or
+// may), and such a render keeps its probe.
+TEST(RenderPlan, OnlyRendersThatDrawNothingAreNoiseless) {
+    PlannedScene s = load("scene1_point.scene");
+    RenderPlan plan = planRender(RenderRequest{}, s.scene, s.flat.arrays);
+    EXPECT_TRUE(plan.noiseless);
+    RenderLimits limits = plan.limits(RenderRequest{}, true);
+    EXPECT_TRUE(limits.noiseless);
+    EXPECT_FALSE(limits.errorProbe);
+    for (const char* name : {"scene1_area.scene", "scene9_indirect_point.scene", "scene4_reflect.scene",
+                             "scene6_glossy.scene", "scene7_refract.scene", "effect_depth_of_field.scene"}) {
+        const PlannedScene other = load(name);
+        const RenderPlan p = planRender(RenderRequest{}, other.scene, other.flat.arrays);
+        EXPECT_FALSE(p.noiseless) << name;
+        EXPECT_TRUE(p.limits(RenderRequest{}, true).errorProbe) << name;
+    }
+    s.flat.arrays.settings.antialiasing = 4;
+    EXPECT_FALSE(noSamplingNoise(s.flat.arrays));
+    s.flat.arrays.settings.antialiasing = 1;
+    s.flat.arrays.settings.aperture = 0.1f;
+    EXPECT_FALSE(noSamplingNoise(s.flat.arrays));
+    s.flat.arrays.settings.aperture = 0.0f;
+    EXPECT_TRUE(noSamplingNoise(s.flat.arrays));
 }
 
 }  // namespace

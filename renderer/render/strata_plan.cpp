@@ -9,6 +9,7 @@
 
 #include "core/feature_mask.h"
 #include "integrator/render_sample.h"
+#include "integrator/sample_variants.h"
 
 namespace trazo {
 
@@ -54,6 +55,11 @@ uint32_t cyclePasses(const SceneArrays& a, const StrataBlocks& blocks, bool atIn
 uint32_t fullCyclePasses(const SceneArrays& a, const StrataBlocks& blocks) { return cyclePasses(a, blocks, true); }
 
 uint32_t cameraPathPasses(const SceneArrays& a, const StrataBlocks& blocks) { return cyclePasses(a, blocks, false); }
+
+bool noSamplingNoise(const SceneArrays& a) {
+    return sampleVariantFor(a.features) == 0 && antialiasingSide(a.settings.antialiasing) == 1 &&
+           a.settings.aperture == 0.0f;
+}
 
 // Measured on the seed scenes (time × two-seed variance of `--blocks` choices: bench/peers/blocks_sweep.sh;
 // bench/peers/thesis_table.sh compares the result with the fixed grid on all of them): a grid on the camera path is worth a whole block whenever nothing

@@ -44,6 +44,12 @@ uint32_t fullCyclePasses(const SceneArrays& arrays, const StrataBlocks& blocks);
 // takes one block of the light, different directions different blocks.
 uint32_t cameraPathPasses(const SceneArrays& arrays, const StrataBlocks& blocks);
 
+// Whether every pass of every seed renders the same image, so that its error is 0 and needs no estimate: the
+// sample function draws no random number and picks no stratum (render variant 0: point lights only, without
+// reflection, refraction, indirect light or SPEC §6's dispersion and subsurface scattering) at one antialiasing
+// position, the pixel's centre, through a pinhole.
+bool noSamplingNoise(const SceneArrays& arrays);
+
 // The blocks a headless render takes, chosen from measurement: see the definition for the rule and its numbers.
 StrataBlocks headlessBlocks(const SceneArrays& arrays);
 
