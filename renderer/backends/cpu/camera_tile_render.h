@@ -22,7 +22,8 @@ constexpr uint32_t kPacketSide = 8;  // a block of kPacketSide² ≤ kPacketRays
 static_assert(kPacketSide * kPacketSide <= (uint32_t)kPacketRays, "a block's rays fit one packet");
 
 // tile_render.h's renderTilePasses with each block's camera rays traced as one packet (tracePacket), where
-// cameraPacketsApply: the same samples, bit for bit. Per pixel the passes still add in pass order. flatten:
+// cameraPacketsApply, and for F that blockShadingServes the block's pixels shaded together (shadeBlock): the same
+// samples, bit for bit. Per pixel the passes still add in pass order. flatten:
 // everything the block loop calls is inlined into it (GCC's own choice left the shading and shadow rays out of
 // line here: 5% more instructions on scene1_point).
 template <FeatureMask F>
