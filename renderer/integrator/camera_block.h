@@ -83,7 +83,7 @@ inline void indirectOfPoints(const SceneView& scene, BlockPoints& b, uint64_t at
     PerRay<TracedRay> traced;
     PerRay<ShadingPoint> qPoints;
     PerRay<MaterialData> qMaterials;
-    PerRay<Vec3> arriving;
+    PerRay<Vec3> fromQ;
     int used = 0;
     auto flush = [&] {
         for (int k = used; k < kPacketRays; ++k) {  // never traced, but read whole by the packet's set-up
@@ -94,18 +94,11 @@ inline void indirectOfPoints(const SceneView& scene, BlockPoints& b, uint64_t at
         }
         const uint64_t active = used == kPacketRays ? ~0ull : (1ull << used) - 1;
         tracePacket(scene, origins, packet, active, traced.data());
-        uint64_t atObject = 0;
-        for (int k = 0; k < used; ++k) {
-            const TracedRay& r = traced[k];
-            if (!r.found || r.hit.object == kNoObject) continue;  // the sky or a light: 0
-            new (qPoints.data() + k) ShadingPoint(shadingPointAt(scene, r.ray, r.hit, qMaterials[k]));
-            atObject |= 1ull << k;
-        }
-        directOfPoints(scene, qPoints, qMaterials, atObject, arriving, rays);  // Direct(Q)
+        const uint64_t atObject = lightFromFoundPoints(scene, traced, active, qPoints, qMaterials, fromQ, rays);
         for (uint64_t m = atObject; m; m &= m - 1) {
             const int k = __builtin_ctzll(m), i = owner[k];
-            const Vec3 fromQ = arriving[k] + qMaterials[k].emissive;  // Direct(Q) + Ke(Q)
-            sum[i] += b.materials[i].diffuse * evalOrenNayar(views[i], b.points[i].n, traced[k].ray.direction) * fromQ;
+            const float on = evalOrenNayar(views[i], b.points[i].n, traced[k].ray.direction);
+            sum[i] += b.materials[i].diffuse * on * fromQ[k];
         }
         used = 0;
     };

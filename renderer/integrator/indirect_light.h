@@ -84,6 +84,33 @@ inline bool indirectPacketsApply(const SceneView& scene, uint32_t directions) {
 // direction above the geometric surface leaves from sp.above), and the shadow rays of the points Q they find
 // towards each point light as another (directPointLightsTogether). The same draws, rays and sum, bit for bit,
 // where indirectPacketsApply.
+// What the traced directions of `traced` (bit k of `active`: ray k) found, where they found an object (not the
+// sky, nor a light): Q's shading point and material, and fromQ[k] = Direct(Q) + Ke(Q) with point lights only, the
+// Qs' shadow rays traced together (directPointLightsTogether). Returns those rays. lightArrivingFrom's values.
+inline uint64_t lightFromFoundPoints(const SceneView& scene, PerRay<TracedRay>& traced, uint64_t active,
+                                     PerRay<ShadingPoint>& points, PerRay<MaterialData>& materials,
+                                     PerRay<Vec3>& fromQ, uint32_t& rays) {
+    uint64_t atObject = 0;
+    for (uint64_t left = active; left; left &= left - 1) {
+        const int k = __builtin_ctzll(left);
+        const TracedRay& r = traced[k];
+        if (!r.found || r.hit.object == kNoObject) continue;
+        new (points.data() + k) ShadingPoint(shadingPointAt(scene, r.ray, r.hit, materials[k]));
+        atObject |= 1ull << k;
+    }
+    // GCC takes the const arrays for read whole (a -Wmaybe-uninitialized false positive), where only the
+    // elements of atObject are read, all written above.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+    directPointLightsTogether(scene, points.data(), materials.data(), atObject, fromQ.data(), rays);  // Direct(Q)
+#pragma GCC diagnostic pop
+    for (uint64_t left = atObject; left; left &= left - 1) {
+        const int k = __builtin_ctzll(left);
+        fromQ[k] = fromQ[k] + materials[k].emissive;  // Direct(Q) + Ke(Q)
+    }
+    return atObject;
+}
+
 template <FeatureMask F>
 inline Vec3 indirectLightTogether(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
                                   const StrataBlock& directions, SampleStream& rng, uint32_t& rays) {
@@ -93,7 +120,7 @@ inline Vec3 indirectLightTogether(const SceneView& scene, const ShadingPoint& sp
     PerRay<TracedRay> traced;
     PerRay<ShadingPoint> points;     // Q, where atObject
     PerRay<MaterialData> materials;  // Q's, where atObject
-    PerRay<Vec3> arriving;
+    PerRay<Vec3> fromQ;
     Vec3 sum(0.0f);
     for (uint32_t start = 0; start < directions.size; start += kPacketRays) {
         const uint32_t count = directions.size - start < kPacketRays ? directions.size - start : kPacketRays;
@@ -111,19 +138,10 @@ inline Vec3 indirectLightTogether(const SceneView& scene, const ShadingPoint& sp
         }
         rays += (uint32_t)__builtin_popcountll(active);
         tracePacket(scene, sp.above, packet, active, traced.data());
-        uint64_t atObject = 0;  // the directions that found an object (not the sky, nor a light)
-        for (uint64_t left = active; left; left &= left - 1) {
-            const int i = __builtin_ctzll(left);
-            const TracedRay& r = traced[i];
-            if (!r.found || r.hit.object == kNoObject) continue;
-            new (points.data() + i) ShadingPoint(shadingPointAt(scene, r.ray, r.hit, materials[i]));
-            atObject |= 1ull << i;
-        }
-        directPointLightsTogether(scene, points.data(), materials.data(), atObject, arriving.data(), rays);  // Direct(Q)
+        const uint64_t atObject = lightFromFoundPoints(scene, traced, active, points, materials, fromQ, rays);
         for (uint64_t left = atObject; left; left &= left - 1) {
             const int i = __builtin_ctzll(left);
-            const Vec3 fromQ = arriving[i] + materials[i].emissive;  // Direct(Q) + Ke(Q)
-            sum += m.diffuse * evalOrenNayar(view, sp.n, traced[i].ray.direction) * fromQ;
+            sum += m.diffuse * evalOrenNayar(view, sp.n, traced[i].ray.direction) * fromQ[i];
         }
     }
     return sum;
