@@ -68,6 +68,12 @@ public:
         (void)out;
         throw std::logic_error("the " + name() + " backend has no error probe");
     }
+    // Replaces the probe's accumulation with `accum`, one AccumPixel per listed pixel as readProbe gives them
+    // (a grown probe keeps what its pixels had summed: render/error_probe.h).
+    virtual void writeProbe(const std::vector<AccumPixel>& accum) {
+        (void)accum;
+        throw std::logic_error("the " + name() + " backend has no error probe");
+    }
     // Rays traced since the last reset.
     virtual uint64_t raysTraced() const = 0;
     // Answers every query against the uploaded scene (answerRayQuery: benchmarks, agreement tests, the
@@ -107,6 +113,10 @@ inline FrameParams boundFrame(const FrameParams& frame, uint32_t width, uint32_t
 inline void checkProbePixels(const std::vector<uint32_t>& pixels, uint32_t width, uint32_t height) {
     for (uint32_t p : pixels)
         if ((uint64_t)p >= (uint64_t)width * height) throw std::logic_error("resizeProbe: a pixel beyond the image");
+}
+
+inline void checkProbeAccumulation(const std::vector<AccumPixel>& accum, size_t probePixels) {
+    if (accum.size() != probePixels) throw std::logic_error("writeProbe: not one AccumPixel per probed pixel");
 }
 
 // Backend::traceRays's answers as their t alone: Nearest t (+inf on a miss) or Shadow 1 (blocked) or 0.

@@ -35,19 +35,36 @@ double halvesStatistic(const AccumPixel& p) {
     return s;
 }
 
+// A pixel's chance of being drawn, π_i = min(1, base + s_i/τ) with Σ s_i/τ = the bright share's expected
+// draw, and its fixed uniform number u_i (drawn when u_i < π_i).
+struct ProbeChances {
+    double base = 0.0;
+    double share = 0.0;  // the bright share's expected draw: perValue = share / Σ s_i
+    uint32_t key = 0;
+
+    ProbeChances(size_t n, uint32_t seed) : key(hashCombine(seed, kProbeSeedSalt + 1u)) {
+        // Small images: at least ~64 pixels, all of them below 64.
+        base = std::max(std::min(kProbeMaxBaseShare, double(kProbeBasePixels) / double(n)),
+                        std::min(1.0, double(kProbeMinPixels) / double(n)));
+        share = kProbeBrightShare * base * double(n);
+    }
+    double uniform(uint32_t i) const { return double(hashCombine(key, i)) * 0x1p-32; }  // in [0, 1)
+    double chance(double perValue, double value) const { return std::min(1.0, base + perValue * value); }
+};
+
+double totalSquaredValue(const std::vector<AccumPixel>& image) {
+    double total = 0.0;
+    for (const AccumPixel& p : image) total += squaredValue(p);
+    return total;
+}
+
 }  // namespace
 
 ErrorProbe designProbe(const std::vector<AccumPixel>& image, uint32_t width, uint32_t height, uint32_t seed) {
     ErrorProbe probe;
     const size_t n = (size_t)width * height;
     if (n == 0 || image.size() != n) return probe;
-    // Small images: at least ~64 pixels, all of them below 64.
-    const double base = std::max(std::min(kProbeMaxBaseShare, double(kProbeBasePixels) / double(n)),
-                                 std::min(1.0, double(kProbeMinPixels) / double(n)));
-    // π_i = min(1, base + s_i/τ) with Σ s_i/τ = the bright share's expected draw: perValue = share / Σ s_i.
-    const double share = kProbeBrightShare * base * double(n);
-    const uint32_t key = hashCombine(seed, kProbeSeedSalt + 1u);
-    auto uniform = [&](uint32_t i) { return double(hashCombine(key, i)) * 0x1p-32; };  // in [0, 1)
+    const ProbeChances chances(n, seed);
     // One pass over the image (it is large): the total, and the pixels that may be drawn whatever the rest adds.
     // The running total only grows, so share / running ≥ perValue, and the chance it gives is ≥ the pixel's.
     struct Candidate {
@@ -59,18 +76,64 @@ ErrorProbe designProbe(const std::vector<AccumPixel>& image, uint32_t width, uin
     for (size_t i = 0; i < n; ++i) {
         const double value = squaredValue(image[i]);
         total += value;
-        const double bound = total > 0.0 ? share / total : 0.0;
-        if (uniform((uint32_t)i) < std::min(1.0, base + bound * value)) candidates.push_back({(uint32_t)i, value});
+        const double bound = total > 0.0 ? chances.share / total : 0.0;
+        if (chances.uniform((uint32_t)i) < chances.chance(bound, value)) candidates.push_back({(uint32_t)i, value});
     }
-    const double perValue = total > 0.0 ? share / total : 0.0;
+    const double perValue = total > 0.0 ? chances.share / total : 0.0;
     for (const Candidate& c : candidates) {
-        const double chance = std::min(1.0, base + perValue * c.value);
-        if (uniform(c.index) < chance) {
+        const double chance = chances.chance(perValue, c.value);
+        if (chances.uniform(c.index) < chance) {
             probe.pixels.push_back(c.index);
             probe.weights.push_back(1.0 / chance);
         }
     }
     return probe;
+}
+
+ErrorProbe growProbe(const std::vector<AccumPixel>& image, uint32_t width, uint32_t height, uint32_t seed,
+                     ErrorProbe& probe) {
+    ErrorProbe added;
+    const size_t n = (size_t)width * height;
+    if (n == 0 || image.size() != n) return added;
+    const ProbeChances chances(n, seed);
+    const double total = totalSquaredValue(image);
+    const double perValue = total > 0.0 ? chances.share / total : 0.0;
+    size_t k = 0;  // the next probed pixel
+    for (size_t i = 0; i < n; ++i) {
+        const double chance = chances.chance(perValue, squaredValue(image[i]));
+        if (k < probe.pixels.size() && probe.pixels[k] == i) {
+            // Drawn before with chance 1/weight: its π' is the larger of the two.
+            probe.weights[k] = std::min(probe.weights[k], 1.0 / chance);
+            ++k;
+        } else if (chances.uniform((uint32_t)i) < chance) {
+            // Not drawn before, so u_i was at least every earlier chance: π' is this one.
+            added.pixels.push_back((uint32_t)i);
+            added.weights.push_back(1.0 / chance);
+        }
+    }
+    return added;
+}
+
+void addToProbe(ErrorProbe& probe, std::vector<AccumPixel>& probeAccum, const ErrorProbe& added,
+                const std::vector<AccumPixel>& addedAccum) {
+    ErrorProbe merged;
+    std::vector<AccumPixel> mergedAccum;
+    const size_t total = probe.pixels.size() + added.pixels.size();
+    merged.pixels.reserve(total);
+    merged.weights.reserve(total);
+    mergedAccum.reserve(total);
+    size_t a = 0, b = 0;
+    while (a < probe.pixels.size() || b < added.pixels.size()) {
+        const bool fromProbe =
+            b == added.pixels.size() || (a < probe.pixels.size() && probe.pixels[a] < added.pixels[b]);
+        const ErrorProbe& from = fromProbe ? probe : added;
+        const size_t k = fromProbe ? a++ : b++;
+        merged.pixels.push_back(from.pixels[k]);
+        merged.weights.push_back(from.weights[k]);
+        mergedAccum.push_back(fromProbe ? probeAccum[k] : addedAccum[k]);
+    }
+    probe = std::move(merged);
+    probeAccum = std::move(mergedAccum);
 }
 
 FrameParams probeFrame(const FrameParams& image) {

@@ -10,6 +10,11 @@
 // proportional to its squared value there, so the few bright pixels that carry most of an image's squared
 // error (a specular highlight, a bright indirect path) are probed with certainty instead of by luck. Where
 // the image has halves, their statistic, known at every pixel, rescales the sum (a ratio estimator).
+// A render of many passes grows its probe before each estimate (growProbe): pixel i is then in the probe when
+// u_i < π_i' = the largest chance any image so far gave it (u_i: its fixed uniform number), and weighs 1/π_i'.
+// π_i' is a function of the images alone, which are independent of u and of G, so the sum stays unbiased;
+// and a rare bright sample that lands after the first pass (a glossy reflection of a small light) is then
+// probed with certainty too, where the first pass's draw would have missed it but by luck.
 // relError = sqrt(MSE) / the image's mean channel value, as error_estimate.h defines it. The probe costs about
 // 1.25 × its base share of the image's work: under 2 % from 512 × 512 up, at most 31 %. Host code.
 #pragma once
@@ -36,6 +41,18 @@ struct ErrorProbe {
 
 // Draws the probe from the image's accumulation after its first pass (width × height, seed: the render's).
 ErrorProbe designProbe(const std::vector<AccumPixel>& image, uint32_t width, uint32_t height, uint32_t seed);
+
+// Updates `probe` to the draw of growProbe (see above) for `image`, the render's accumulation now: the
+// probed pixels' weights become 1/π_i', and the pixels it adds are returned (ascending, with their weights),
+// for the caller to render over the image's passes and merge (addToProbe). `probe` must be designProbe's
+// (or grown from it) for the same image size and seed.
+ErrorProbe growProbe(const std::vector<AccumPixel>& image, uint32_t width, uint32_t height, uint32_t seed,
+                     ErrorProbe& probe);
+
+// Merges the grown pixels `added` and their accumulation into the probe and its accumulation, keeping the
+// pixels ascending.
+void addToProbe(ErrorProbe& probe, std::vector<AccumPixel>& probeAccum, const ErrorProbe& added,
+                const std::vector<AccumPixel>& addedAccum);
 
 // The image's frame rendering the probe: its own seed (so its strata and jitter are independent of the
 // image's) into the backend's probe accumulation (Backend::resizeProbe took the pixels).

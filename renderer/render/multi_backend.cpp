@@ -93,6 +93,11 @@ void MultiBackend::resizeProbe(const std::vector<uint32_t>& pixels) {
 
 void MultiBackend::readProbe(std::vector<AccumPixel>& out) { readSum(&Backend::readProbe, out); }
 
+void MultiBackend::writeProbe(const std::vector<AccumPixel>& accum) {
+    const std::vector<AccumPixel> cleared(accum.size());
+    forEach([&](size_t i) { backends_[i]->writeProbe(i == 0 ? accum : cleared); });
+}
+
 uint64_t MultiBackend::raysTraced() const {
     uint64_t rays = 0;
     for (const auto& b : backends_) rays += b->raysTraced();

@@ -30,6 +30,7 @@ public:
     bool hasProbe() const override;
     void resizeProbe(const std::vector<uint32_t>& pixels) override;
     void readProbe(std::vector<AccumPixel>& out) override;
+    void writeProbe(const std::vector<AccumPixel>& accum) override;  // to the first backend, the others cleared
     uint64_t raysTraced() const override;
     using Backend::traceRays;
     double traceRays(const std::vector<RayQuery>& queries, RayQueryKind kind, std::vector<RayAnswer>& out) override;

@@ -76,5 +76,31 @@ TEST(MultiBackend, TwoOrThreeCpuBackendsEqualOneWithinTheMergeBound) {
     }
 }
 
+// A grown probe's accumulation written back (growRenderedProbe) reads back the same from one CPU backend and
+// from several, whose probes are read as their sum; a wrong count is refused.
+TEST(MultiBackend, WrittenProbeReadsBackAsWritten) {
+    std::vector<AccumPixel> written(3);
+    for (size_t k = 0; k < written.size(); ++k) written[k].add(Vec3(0.25f * k, 1.5f, 3.0f), k == 1, 2.0f);
+    std::vector<std::unique_ptr<Backend>> backends;
+    for (int i = 0; i < 3; ++i) backends.push_back(createCpuBackend(1));
+    MultiBackend multi(std::move(backends));
+    std::unique_ptr<Backend> single = createCpuBackend(1);
+    for (Backend* backend : {static_cast<Backend*>(&multi), single.get()}) {
+        backend->resize(8, 4);
+        backend->resizeProbe({1u, 9u, 30u});
+        backend->writeProbe(written);
+        std::vector<AccumPixel> read;
+        backend->readProbe(read);
+        ASSERT_EQ(read.size(), written.size());
+        for (size_t k = 0; k < read.size(); ++k) {
+            EXPECT_EQ(read[k].count, written[k].count);
+            EXPECT_EQ(read[k].countB, written[k].countB);
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(read[k].sum[c], written[k].sum[c]);
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(read[k].sumB[c], written[k].sumB[c]);
+        }
+        EXPECT_THROW(backend->writeProbe(std::vector<AccumPixel>(2)), std::logic_error);
+    }
+}
+
 }  // namespace
 }  // namespace trazo

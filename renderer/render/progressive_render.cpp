@@ -23,6 +23,22 @@ const std::vector<AccumPixel>& accumulationOf(Backend& backend, std::vector<Accu
 
 }  // namespace
 
+void growRenderedProbe(Backend& backend, const FrameParams& frame, const RenderLimits& limits, uint32_t passes,
+                       ErrorProbe& probe, std::vector<AccumPixel>& accum) {
+    if (probe.empty() || passes == 0) return;
+    const ErrorProbe added =
+        growProbe(accumulationOf(backend, accum), frame.camera.width, frame.camera.height, frame.seed, probe);
+    if (added.empty()) return;
+    std::vector<AccumPixel> probeAccum, addedAccum;
+    backend.readProbe(probeAccum);
+    backend.resizeProbe(added.pixels);
+    renderPassRange(backend, probeFrame(frame), limits.firstPass, passes, limits.cyclePasses);
+    backend.readProbe(addedAccum);
+    addToProbe(probe, probeAccum, added, addedAccum);
+    backend.resizeProbe(probe.pixels);
+    backend.writeProbe(probeAccum);
+}
+
 bool splitsHalves(uint32_t cyclePasses) { return cyclePasses > 0 && cyclePasses < kMaxCyclePasses; }
 
 bool halvesBalanced(uint32_t cyclePasses, PassRange range) {
@@ -79,6 +95,7 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
     bool probed = limits.errorProbe && !limits.noiseless;
     auto stopped = [&] { return limits.stop && limits.stop->load(); };
     double batchSeconds = kBatchSeconds;
+    uint32_t grownAt = 0;  // the passes when the probe was last grown (or drawn) from the image
     while (out.passes < maxPasses && !stopped()) {
         const double batchStart = elapsed();
         const uint32_t count = batches.nextBatch(batchSeconds, maxPasses - out.passes);
@@ -91,6 +108,7 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
                 if (targeted) batches.estimateSoon();
             } else {
                 backend.resizeProbe(out.probe.pixels);
+                grownAt = out.passes + count;
             }
         }
         if (probed) renderPassRange(backend, probe, limits.firstPass + out.passes, count, limits.cyclePasses);
@@ -105,6 +123,8 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
             break;
         }
         if (targeted && batches.estimateDue()) {
+            if (probed) growRenderedProbe(backend, frame, limits, out.passes, out.probe, accum);
+            grownAt = out.passes;
             const ErrorEstimate e = estimateRenderError(backend, out.probe, accum);
             out.estimatedRelError = e.relError;
             ++out.errorChecks;
@@ -124,6 +144,7 @@ RenderOutcome renderProgressive(Backend& backend, const FrameParams& frame, cons
             batchSeconds = std::min(kBatchSeconds, left);
         }
     }
+    if (probed && grownAt != out.passes) growRenderedProbe(backend, frame, limits, out.passes, out.probe, accum);
     out.seconds = elapsed();
     out.rays = backend.raysTraced();
     return out;

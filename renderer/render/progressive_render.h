@@ -45,7 +45,8 @@ struct RenderLimits {
     uint32_t cyclePasses = 0;
     uint32_t firstPass = 0;  // the global index of the first pass (a partial render of passes [first, first + passes))
     // Estimate the error with a probe (render/error_probe.h; the backend must have one): drawn after the first
-    // pass, then rendered beside the image in every batch; the target error is checked from the first pass.
+    // pass, then rendered beside the image in every batch and grown before each estimate; the target error is
+    // checked from the first pass.
     bool errorProbe = false;
     // Every pass is the same image (noSamplingNoise): no probe, the error is 0 exactly, and a target error is met
     // by the first pass.
@@ -67,8 +68,15 @@ struct RenderOutcome {
     double estimatedRelError = NAN;  // at the last target-error check (NaN when none was made)
     uint32_t errorChecks = 0;        // accumulation reads made for the target error
     bool reachedTarget = false;
-    ErrorProbe probe;  // with limits.errorProbe: the probe drawn after the first pass
+    ErrorProbe probe;  // with limits.errorProbe: the probe drawn after the first batch, grown after the last
 };
+
+// Grows the probe to the image's draw after `passes` passes (growProbe) and renders the pixels it adds over
+// passes [limits.firstPass, limits.firstPass + passes) of frame's probe frame, keeping what the others had
+// summed. renderProgressive calls it before every estimate it makes and after its last pass. Leaves the
+// image's accumulation in `accum` where the backend must copy it.
+void growRenderedProbe(Backend& backend, const FrameParams& frame, const RenderLimits& limits, uint32_t passes,
+                       ErrorProbe& probe, std::vector<AccumPixel>& accum);
 
 // The render's error now: from the probe when there is one, otherwise from the halves. Leaves the image's
 // accumulation in `accum`.

@@ -65,6 +65,10 @@ public:
     void readProbe(std::vector<AccumPixel>& out) override {
         out.assign(probe_.begin(), probe_.begin() + (ptrdiff_t)probePixels_.size());
     }
+    void writeProbe(const std::vector<AccumPixel>& accum) override {
+        checkProbeAccumulation(accum, probePixels_.size());
+        std::copy(accum.begin(), accum.end(), probe_.begin());
+    }
 
     void renderPasses(const FrameParams& target, uint32_t firstPass, uint32_t passCount) override {
         const FrameParams frame =

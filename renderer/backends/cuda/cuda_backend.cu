@@ -213,6 +213,11 @@ public:
         out.resize(probeCount_);
         TRAZO_CUDA_CHECK(cudaMemcpy(out.data(), probe_, probeCount_ * sizeof(AccumPixel), cudaMemcpyDeviceToHost));
     }
+    void writeProbe(const std::vector<AccumPixel>& accum) override {
+        checkProbeAccumulation(accum, probeCount_);
+        useDevice();
+        TRAZO_CUDA_CHECK(cudaMemcpy(probe_, accum.data(), probeCount_ * sizeof(AccumPixel), cudaMemcpyHostToDevice));
+    }
     void renderPasses(const FrameParams& target, uint32_t firstPass, uint32_t passCount) override {
         useDevice();
         const FrameParams frame = boundFrame(target, width_, height_, probePixels_.data(), probeCount_);
