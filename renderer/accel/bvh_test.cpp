@@ -128,15 +128,19 @@ void expectValidStructure(const Bvh& bvh, const std::vector<Aabb>& bounds, uint3
     for (size_t i = 0; i < visits.size(); ++i) ASSERT_EQ(visits[i], 1u) << "node " << i << " unreachable or shared";
 }
 
-// The wide nodes of collapseBvh: every node reached once, every primitive position in exactly one leaf
-// (the binary leaves, unchanged), each child box holding every primitive below it, no deeper than the binary tree.
-void expectValidWideStructure(const Bvh& bvh, const std::vector<WideBvhNode>& nodes, const std::vector<Aabb>& bounds) {
+// The wide nodes of collapseBvh (or widenBvh's eight-wide ones): every node reached once, every primitive
+// position in exactly one leaf (the binary leaves, unchanged), each child box holding every primitive below it,
+// no deeper than the binary tree. Returns the depth of the deepest leaf.
+template <class Node>
+uint32_t expectValidWideStructure(const Bvh& bvh, const std::vector<Node>& nodes, const std::vector<Aabb>& bounds) {
+    constexpr int Width = int(sizeof(Node::child) / sizeof(uint32_t));
     const size_t n = bounds.size();
     if (n == 0) {
         EXPECT_TRUE(nodes.empty());
-        return;
+        return 0;
     }
-    ASSERT_FALSE(nodes.empty());
+    EXPECT_FALSE(nodes.empty());
+    if (nodes.empty()) return 0;
     struct Item { uint32_t node, depth; };
     std::vector<Item> stack{{0, 0}};
     std::vector<uint32_t> covered(n, 0), visits(nodes.size(), 0);
@@ -153,23 +157,24 @@ void expectValidWideStructure(const Bvh& bvh, const std::vector<WideBvhNode>& no
     while (!stack.empty()) {
         const Item it = stack.back();
         stack.pop_back();
-        ASSERT_LT(it.node, nodes.size());
+        EXPECT_LT(it.node, nodes.size());
+        if (it.node >= nodes.size()) return 0;
         ++visits[it.node];
-        const WideBvhNode& node = nodes[it.node];
+        const Node& node = nodes[it.node];
         int used = 0;
-        for (int lane = 0; lane < kBvhWidth; ++lane) {
+        for (int lane = 0; lane < Width; ++lane) {
             const uint32_t ref = node.child[lane];
             if (ref == kBvhEmptyLane) {
                 EXPECT_GT(node.bounds[0][0][lane], node.bounds[0][1][lane]) << "an unused lane's box must be empty";
                 continue;
             }
-            ASSERT_EQ(used++, lane) << "used lanes come first";
+            EXPECT_EQ(used++, lane) << "used lanes come first";
             Aabb box;
             box.min = Vec3(node.bounds[0][0][lane], node.bounds[1][0][lane], node.bounds[2][0][lane]);
             box.max = Vec3(node.bounds[0][1][lane], node.bounds[1][1][lane], node.bounds[2][1][lane]);
             std::vector<uint32_t> below;
             primitivesBelow(ref, primitivesBelow, below);
-            for (uint32_t i : below) ASSERT_TRUE(box.contains(bounds[bvh.primitiveOrder[i]]));
+            for (uint32_t i : below) EXPECT_TRUE(box.contains(bounds[bvh.primitiveOrder[i]]));
             if (bvhIsLeaf(ref)) {
                 deepest = std::max(deepest, it.depth + 1);
                 for (uint32_t i : below) ++covered[i];
@@ -179,10 +184,13 @@ void expectValidWideStructure(const Bvh& bvh, const std::vector<WideBvhNode>& no
         }
         EXPECT_GE(used, 1);
     }
-    for (size_t i = 0; i < n; ++i) ASSERT_EQ(covered[i], 1u) << "position " << i << " not in exactly one leaf";
-    for (size_t i = 0; i < visits.size(); ++i) ASSERT_EQ(visits[i], 1u) << "wide node " << i << " unreachable or shared";
-    EXPECT_EQ(deepest, wideBvhDepth(nodes));
+    for (size_t i = 0; i < n; ++i) EXPECT_EQ(covered[i], 1u) << "position " << i << " not in exactly one leaf";
+    for (size_t i = 0; i < visits.size(); ++i) EXPECT_EQ(visits[i], 1u) << "wide node " << i << " unreachable or shared";
+    if constexpr (Width == kBvhWidth) {
+        EXPECT_EQ(deepest, wideBvhDepth(nodes));
+    }
     EXPECT_LE(deepest, std::max(1u, bvhDepth(bvh)));
+    return deepest;
 }
 
 std::vector<Vec3> concat(std::vector<Vec3> a, const std::vector<Vec3>& b) {
@@ -238,7 +246,14 @@ TEST(BvhBuild, StructureIsValidOnVariedMeshes) {
             const Bvh bvh = buildBvh(bounds, options);
             expectValidStructure(bvh, bounds, leaf);
             EXPECT_LE(bvhDepth(bvh), kMaxBvhDepth);
-            if (leaf <= kBvhMaxLeafSize) expectValidWideStructure(bvh, collapseBvh(bvh), bounds);
+            if (leaf > kBvhMaxLeafSize) continue;
+            const std::vector<WideBvhNode> wide = collapseBvh(bvh);
+            const uint32_t depth = expectValidWideStructure(bvh, wide, bounds);
+            // Eight wide: the same leaves, no deeper than the four-wide tree (so kBvh8StackSize bounds a
+            // traversal), and fewer nodes.
+            const std::vector<WideBvhNode8> wide8 = widenBvh(wide.data(), wide.size());
+            EXPECT_LE(expectValidWideStructure(bvh, wide8, bounds), depth);
+            EXPECT_LT(wide8.size(), wide.size());
         }
     }
 }
@@ -274,6 +289,7 @@ TEST(BvhBuild, ExponentialSpacingStaysWithinMaxDepth) {
     EXPECT_GT(bvhDepth(bvh), 40u) << "input no longer pathological: the test checks nothing";
     const std::vector<WideBvhNode> wide = collapseBvh(bvh);
     expectValidWideStructure(bvh, wide, bounds);
+    EXPECT_LE(expectValidWideStructure(bvh, widenBvh(wide.data(), wide.size()), bounds), wideBvhDepth(wide));
 
     // Traversal of the deep tree: rays along the row of boxes enter all of them, so the stack runs deep.
     // The nearest box a ray enters, and whether it enters any before tMax, must match testing every box.

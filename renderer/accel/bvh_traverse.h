@@ -132,10 +132,10 @@ struct StackEntry {
 }  // namespace bvh_detail
 
 // Entries of the traversal stack the two BVH levels share (a mesh's traversal continues above the top level's
-// entries). The host holds the bound of any pair of trees the builder makes; a GPU thread's stack lives in
-// local memory, so the device holds 64 entries and the upload refuses a scene whose trees need more
-// (traversalStackNeed).
-constexpr int kHostTraversalStackSize = 2 * kBvhStackSize;
+// entries). The host holds the bound of any pair of trees the builder makes (the top level's four-wide, a
+// mesh's four- or eight-wide: accel/wide8_traverse.h); a GPU thread's stack lives in local memory, so the
+// device holds 64 entries and the upload refuses a scene whose trees need more (traversalStackNeed).
+constexpr int kHostTraversalStackSize = kBvhStackSize + kBvh8StackSize;
 constexpr int kDeviceTraversalStackSize = 64;
 #if TRAZO_DEVICE_PATHS
 constexpr int kTraversalStackSize = kDeviceTraversalStackSize;

@@ -78,6 +78,87 @@ std::vector<WideBvhNode> collapseBvh(const Bvh& bvh) {
     return out;
 }
 
+std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count) {
+    std::vector<WideBvhNode8> out;
+    if (count == 0) return out;
+    // A lane of the node being made: a child of some four-wide node (which node, which of its lanes).
+    struct Lane {
+        uint32_t node, lane;
+    };
+    auto laneArea = [&](Lane l) {
+        const WideBvhNode& n = nodes[l.node];
+        Aabb box;
+        box.grow(Vec3(n.bounds[0][0][l.lane], n.bounds[1][0][l.lane], n.bounds[2][0][l.lane]));
+        box.grow(Vec3(n.bounds[0][1][l.lane], n.bounds[1][1][l.lane], n.bounds[2][1][l.lane]));
+        return box.surfaceArea();
+    };
+    auto usedLanes = [&](uint32_t node) {
+        uint32_t used = 0;
+        for (uint32_t ref : nodes[node].child) used += ref != kBvhEmptyLane;
+        return used;
+    };
+    auto emptyNode = [] {
+        WideBvhNode8 node{};
+        const float inf = std::numeric_limits<float>::infinity();
+        for (int lane = 0; lane < kBvh8Width; ++lane) {
+            for (int axis = 0; axis < 3; ++axis) node.bounds[axis][0][lane] = inf, node.bounds[axis][1][lane] = -inf;
+            node.child[lane] = kBvhEmptyLane;
+        }
+        return node;
+    };
+    out.reserve(count);
+    out.push_back(emptyNode());
+    // (four-wide node, the eight-wide node that takes its children), depth first.
+    std::vector<std::pair<uint32_t, uint32_t>> pending{{0u, 0u}};
+    while (!pending.empty()) {
+        const auto [seed, made] = pending.back();
+        pending.pop_back();
+        Lane lanes[kBvh8Width];
+        int used = 0;
+        for (uint32_t lane = 0; lane < (uint32_t)kBvhWidth; ++lane)
+            if (nodes[seed].child[lane] != kBvhEmptyLane) lanes[used++] = {seed, lane};
+        for (;;) {
+            int open = -1;
+            float openArea = 0.0f;
+            for (int i = 0; i < used; ++i) {
+                const uint32_t ref = nodes[lanes[i].node].child[lanes[i].lane];
+                if (bvhIsLeaf(ref) || used - 1 + (int)usedLanes(ref) > kBvh8Width) continue;
+                const float area = laneArea(lanes[i]);
+                if (open < 0 || area > openArea) open = i, openArea = area;
+            }
+            if (open < 0) break;
+            const uint32_t opened = nodes[lanes[open].node].child[lanes[open].lane];
+            bool first = true;
+            for (uint32_t lane = 0; lane < (uint32_t)kBvhWidth; ++lane) {
+                if (nodes[opened].child[lane] == kBvhEmptyLane) continue;
+                lanes[first ? open : used++] = {opened, lane};
+                first = false;
+            }
+        }
+        uint32_t refs[kBvh8Width];
+        for (int i = 0; i < used; ++i) {
+            const uint32_t ref = nodes[lanes[i].node].child[lanes[i].lane];
+            if (bvhIsLeaf(ref)) {
+                refs[i] = ref;
+            } else {
+                refs[i] = (uint32_t)out.size();
+                out.push_back(emptyNode());
+            }
+        }
+        WideBvhNode8& node = out[made];
+        for (int i = 0; i < used; ++i) {
+            const WideBvhNode& from = nodes[lanes[i].node];
+            for (int axis = 0; axis < 3; ++axis)
+                for (int side = 0; side < 2; ++side) node.bounds[axis][side][i] = from.bounds[axis][side][lanes[i].lane];
+            node.child[i] = refs[i];
+        }
+        // Children are pushed in reverse so the first lane's subtree is laid out right after this node.
+        for (int i = used - 1; i >= 0; --i)
+            if (!bvhIsLeaf(refs[i])) pending.push_back({nodes[lanes[i].node].child[lanes[i].lane], refs[i]});
+    }
+    return out;
+}
+
 Aabb wideNodeBounds(const WideBvhNode& node) {
     Aabb b;
     for (int lane = 0; lane < kBvhWidth; ++lane) {

@@ -15,6 +15,13 @@ namespace trazo {
 // root with one leaf child; an empty one stays empty. Needs leaves of ≤ kBvhMaxLeafSize primitives.
 std::vector<WideBvhNode> collapseBvh(const Bvh& bvh);
 
+// The eight-wide tree of a four-wide one (nodes[0] its root, `count` nodes): each eight-wide node takes a
+// four-wide node's children and, while they fit in eight lanes, opens the interior child of largest surface
+// area into its children. Leaves, their references and the primitive order stay as they are, so a closest-hit
+// query answers the same over either tree; every node is at least as deep in the four-wide tree, so a
+// traversal keeps at most kBvh8StackSize entries. Laid out depth first, the root at 0; empty for count = 0.
+std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count);
+
 // The most entries a traversal of this BVH (nodes[0] its root, `count` nodes) keeps on its stack: each interior
 // node on the way down pushes the children it enters but one, so a node needs (children − 1) above what its
 // neediest interior child needs. Bounds traverseClosest and traverseAny alike; 0 for an empty BVH.

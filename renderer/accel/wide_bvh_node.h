@@ -40,6 +40,19 @@ struct alignas(128) WideBvhNode {
 };
 static_assert(sizeof(WideBvhNode) == 128, "a node should fill exactly two 64-byte cache lines");
 
+// The node the host's AVX2 and AVX-512 kernels traverse meshes over: the same layout with eight lanes (one
+// 256-bit slab test per axis and plane), made from the four-wide nodes where those kernels run (widenBvh,
+// accel/collapse_bvh.h); never on the device. Its tree is no deeper than the four-wide one it is made from.
+constexpr int kBvh8Width = 8;
+constexpr int kBvh8StackSize = (kBvh8Width - 1) * (int)kMaxBvhDepth;
+
+struct alignas(128) WideBvhNode8 {
+    float bounds[3][2][kBvh8Width];  // [axis][0 = min, 1 = max][child]
+    uint32_t child[kBvh8Width];      // child references as WideBvhNode's
+    uint32_t padding[kBvh8Width];    // to 256 bytes: four whole cache lines
+};
+static_assert(sizeof(WideBvhNode8) == 256, "an eight-wide node should fill exactly four 64-byte cache lines");
+
 // The union of a wide node's child boxes (for the root: the whole BVH's bounds). Host code
 // (accel/collapse_bvh.cpp).
 Aabb wideNodeBounds(const WideBvhNode& node);

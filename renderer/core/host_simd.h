@@ -10,3 +10,12 @@
 #else
 #define TRAZO_HOST_SSE 0
 #endif
+
+// TRAZO_HOST_AVX: host code compiled for AVX2 (the CPU backend's AVX2 and AVX-512 kernels): meshes are then
+// traversed over eight-wide nodes (accel/wide8_traverse.h).
+#if TRAZO_HOST_SSE && defined(__AVX2__)
+#include <immintrin.h>
+#define TRAZO_HOST_AVX 1
+#else
+#define TRAZO_HOST_AVX 0
+#endif

@@ -304,4 +304,15 @@ size_t meshNodeCount(const SceneArrays& arrays, uint32_t shape) {
     return end - arrays.meshes[shape].nodeOffset;
 }
 
+std::vector<WideBvhNode8> widenMeshBvhs(SceneArrays& arrays) {
+    std::vector<WideBvhNode8> nodes;
+    for (uint32_t i = 0; i < arrays.meshes.size(); ++i) {
+        const std::vector<WideBvhNode8> mesh =
+            widenBvh(arrays.meshNodes.data() + arrays.meshes[i].nodeOffset, meshNodeCount(arrays, i));
+        arrays.meshes[i].nodeOffset8 = (uint32_t)nodes.size();
+        nodes.insert(nodes.end(), mesh.begin(), mesh.end());
+    }
+    return nodes;
+}
+
 }  // namespace trazo

@@ -35,4 +35,8 @@ uint32_t appendMesh(const MeshData& data, const Affine3& worldFromObject, SceneA
 // The BVH nodes of MeshShape `shape`: meshes' nodes lie in meshNodes one mesh after another.
 size_t meshNodeCount(const SceneArrays& arrays, uint32_t shape);
 
+// Every mesh's eight-wide BVH (widenBvh), one after another, for SceneView::meshNodes8; sets each MeshShape's
+// nodeOffset8 into it. Where the CPU backend's AVX2 or AVX-512 kernels run (backends/cpu/cpu_backend.cpp).
+std::vector<WideBvhNode8> widenMeshBvhs(SceneArrays& arrays);
+
 }  // namespace trazo

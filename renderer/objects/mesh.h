@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "accel/bvh_traverse.h"
+#include "accel/wide8_traverse.h"
 #include "accel/wide_bvh_node.h"
 #include "core/aabb.h"
 #include "core/vec3.h"
@@ -36,9 +37,12 @@ struct MeshShape {
     uint32_t triangleOffset;  // first triangle in SceneView::triangles / triangleCorners
     uint32_t triangleCount;
     uint32_t hasUvs;          // 0: the OBJ had no uvs; textures are ignored on it
+    uint32_t nodeOffset8 = 0;  // root of its eight-wide BVH in SceneView::meshNodes8, where there is one
 };
 
-// Nearest triangle of the mesh in (tMin, tMax); the normal follows the triangle's winding (p0, p1, p2).
+// Nearest triangle of the mesh in (tMin, tMax), of triangles at the same t the first in the mesh's order, so
+// the answer does not depend on the order the BVH's leaves are visited in (four- or eight-wide nodes). The
+// normal follows the triangle's winding (p0, p1, p2).
 // `stack`: the traversal stack the mesh continues on (the top level's, in intersectScene).
 TRAZO_HD bool intersectMesh(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMin, float tMax,
                             ClosestStack& stack, ShapeHit& hit) {
@@ -47,12 +51,21 @@ TRAZO_HD bool intersectMesh(const SceneView& scene, const MeshShape& mesh, const
     uint32_t best = 0;
     TriangleHit bestHit{};
     auto leaf = [&](uint32_t first, uint32_t count, float& tNearest) {
+        // Leaves hold disjoint ranges of triangles, so a leaf starting before the best hit's triangle lies wholly
+        // before it: there a triangle at the same t wins too (tested up to the next float). Within a leaf the
+        // first of equal ones wins already.
+        const float tLimit = first < best ? nextFloatUp(tNearest) : tNearest;
         uint32_t which = 0;
-        if (!intersectTriangleLeaf(tr, triangles + first, count, tMin, tNearest, bestHit, which)) return false;
+        if (!intersectTriangleLeaf(tr, triangles + first, count, tMin, tLimit, bestHit, which)) return false;
         tNearest = bestHit.t;
         best = first + which;
         return true;
     };
+#if TRAZO_HOST_AVX
+    if (scene.meshNodes8.count > 0) {
+        if (!traverseClosest8(scene.meshNodes8.data + mesh.nodeOffset8, ray, tMin, tMax, stack, leaf)) return false;
+    } else
+#endif
     if (!traverseClosest(scene.meshNodes.data + mesh.nodeOffset, ray, tMin, tMax, stack, leaf)) return false;
     const MeshTriangle& t = triangles[best];
     hit.t = bestHit.t;

@@ -20,6 +20,7 @@ struct CsgNodeData;
 struct MeshTriangle;
 struct TriangleCorners;
 struct WideBvhNode;
+struct WideBvhNode8;
 struct MaterialData;
 struct PointLightData;
 struct AreaLightData;
@@ -56,6 +57,9 @@ struct SceneView {
 #undef TRAZO_X
     RenderSettings settings;
     FeatureMask features;
+    // Host only, outside the uploaded list: the meshes' eight-wide BVHs (MeshShape::nodeOffset8), where the CPU
+    // backend's AVX2 or AVX-512 kernels run (widenMeshBvhs, flatten/flatten_mesh.h); empty elsewhere.
+    ArrayView<WideBvhNode8> meshNodes8;
 };
 
 }  // namespace trazo

@@ -9,9 +9,16 @@
 #include <string>
 #include <vector>
 
+#include "accel/bvh_build.h"
+#include "accel/collapse_bvh.h"
 #include "backends/cpu/cpu_kernels.h"
 #include "fetched_assets.h"
+#include "flatten/flatten_mesh.h"
+#include "integrator/packet_lanes.h"
+#include "integrator/scene_intersect.h"
 #include "render_harness.h"
+#include "support/counter_uniform.h"
+#include "support/tessellate.h"
 #include "test_paths.h"
 
 namespace trazo {
@@ -95,6 +102,127 @@ TEST(CpuIsa, EveryPathRendersEveryShippedSceneAlike) {
         }
     }
     EXPECT_GT(scenes, 10);
+}
+
+// Two meshes apart (a bumpy sphere, and a flat grid of 32² quads whose rays through shared vertices and edges
+// hit several triangles at one t), their BVHs, and a top level over them.
+SceneArrays twoMeshes() {
+    SceneArrays arrays;
+    auto add = [&](const std::vector<Vec3>& p) {
+        PreparedMesh mesh;
+        for (size_t i = 0; i + 2 < p.size(); i += 3) mesh.triangles.push_back({p[i], p[i + 1], p[i + 2]});
+        mesh.corners.resize(mesh.triangles.size());
+        arrays.objects.push_back({ObjectKind::Mesh, appendMesh(mesh, arrays), 0});
+    };
+    add(tessellateSphere({0, 0, 0}, 1.0f, 60, 70, 0.08f));
+    std::vector<Vec3> grid;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const Vec3 a(3.0f + 0.125f * x, -2.0f + 0.125f * y, 0.0f), b = a + Vec3(0.125f, 0, 0),
+                       c = a + Vec3(0, 0.125f, 0), d = a + Vec3(0.125f, 0.125f, 0);
+            for (const Vec3& v : {a, b, d, a, d, c}) grid.push_back(v);
+        }
+    add(grid);
+    std::vector<Aabb> bounds;
+    for (uint32_t i = 0; i < arrays.meshes.size(); ++i)
+        bounds.push_back(wideNodeBounds(arrays.meshNodes[arrays.meshes[i].nodeOffset]));
+    arrays.topNodes = collapseBvh(buildBvh(bounds));
+    return arrays;
+}
+
+// The nearest triangle by brute force, of equal t the first in the array: what intersectMesh promises.
+bool bruteForceNearest(const SceneArrays& arrays, const Ray& ray, SurfaceHit& out) {
+    const TriangleRay tr = makeTriangleRay(ray);
+    float tMax = INFINITY;
+    bool found = false;
+    for (uint32_t m = 0; m < arrays.meshes.size(); ++m) {
+        const MeshShape& mesh = arrays.meshes[m];
+        for (uint32_t i = mesh.triangleOffset; i < mesh.triangleOffset + mesh.triangleCount; ++i) {
+            const MeshTriangle& t = arrays.triangles[i];
+            TriangleHit h;
+            if (!intersectTriangle(tr, t.p0, t.p1, t.p2, 0.0f, tMax, h)) continue;
+            tMax = h.t;
+            out.t = h.t, out.object = m, out.triangle = i, out.b1 = h.b1, out.b2 = h.b2;
+            found = true;
+        }
+    }
+    return found;
+}
+
+// Meshes over eight-wide nodes (the AVX2 and AVX-512 kernels, SceneView::meshNodes8) answer every nearest-hit
+// query as the four-wide ones and as brute force do, ties included: the same t, triangle and barycentrics,
+// bit for bit. Rays: random directions, and rays through the grid's vertices and edge midpoints.
+TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
+    SceneArrays arrays = twoMeshes();
+    const SceneView fourWide = hostView(arrays);
+    const std::vector<WideBvhNode8> nodes8 = widenMeshBvhs(arrays);
+    ASSERT_FALSE(nodes8.empty());
+    SceneView eightWide = hostView(arrays);
+    eightWide.meshNodes8 = viewOf(nodes8);
+
+    CounterUniform u(3);
+    const Vec3 origins[] = {{0.3f, 0.2f, 4.0f}, {4.5f, 0.1f, 2.0f}, {-3.0f, 0.5f, -0.5f}, {5.0f, -1.0f, -3.0f}};
+    size_t hits = 0, ties = 0, rays = 0;
+    for (const Vec3& origin : origins) {
+        for (int batch = 0; batch < 40; ++batch) {
+            RayPacket packet;
+            for (int i = 0; i < kPacketRays; ++i) {
+                Vec3 d;
+                if (batch % 2 == 0) {
+                    d = u.direction();
+                } else {  // a grid vertex or an edge midpoint
+                    const float x = 3.0f + 0.0625f * std::floor(u(0.0f, 65.0f)), y = -2.0f + 0.0625f * std::floor(u(0.0f, 65.0f));
+                    d = normalize(Vec3(x, y, 0.0f) - origin);
+                }
+                packet.dx[i] = d.x, packet.dy[i] = d.y, packet.dz[i] = d.z, packet.tMax[i] = INFINITY;
+            }
+            SurfaceHit expected[kPacketRays];
+            bool found[kPacketRays];
+            for (int i = 0; i < kPacketRays; ++i) {
+                const Ray ray{origin, Vec3(packet.dx[i], packet.dy[i], packet.dz[i])};
+                found[i] = bruteForceNearest(arrays, ray, expected[i]);
+                if (!found[i]) continue;
+                ++hits;
+                // A tie: another triangle of the same mesh at exactly this t.
+                const MeshShape& mesh = arrays.meshes[expected[i].object];
+                const TriangleRay tr = makeTriangleRay(ray);
+                for (uint32_t k = mesh.triangleOffset; k < mesh.triangleOffset + mesh.triangleCount; ++k) {
+                    TriangleHit h;
+                    const MeshTriangle& t = arrays.triangles[k];
+                    if (k != expected[i].triangle && intersectTriangle(tr, t.p0, t.p1, t.p2, 0.0f, INFINITY, h) &&
+                        h.t == expected[i].t) {
+                        ++ties;
+                        break;
+                    }
+                }
+            }
+            for (CpuIsa isa : supportedIsas()) {
+                const CameraPacketKernels& kernels = cpuKernelsFor(isa)->cameraPackets();
+                if (!kernels.available) continue;
+                for (const SceneView* view : {&fourWide, static_cast<const SceneView*>(&eightWide)}) {
+                    RayPacket rays = packet;
+                    TracedRay out[kPacketRays];
+                    kernels.tracePacket(*view, origin, rays, ~0ull, out);
+                    for (int i = 0; i < kPacketRays; ++i) {
+                        const std::string where = std::string(cpuIsaName(isa)) +
+                                                  (view == &fourWide ? " four-wide" : " eight-wide") + ", ray " +
+                                                  std::to_string(i) + " of batch " + std::to_string(batch);
+                        ASSERT_EQ(out[i].found, found[i]) << where;
+                        if (!found[i]) continue;
+                        EXPECT_EQ(out[i].hit.t, expected[i].t) << where;
+                        EXPECT_EQ(out[i].hit.object, expected[i].object) << where;
+                        ASSERT_EQ(out[i].hit.triangle, expected[i].triangle) << where;
+                        EXPECT_EQ(out[i].hit.b1, expected[i].b1) << where;
+                        EXPECT_EQ(out[i].hit.b2, expected[i].b2) << where;
+                    }
+                }
+            }
+            rays += kPacketRays;
+        }
+    }
+    std::printf("cpu_isa: %zu rays, %zu hits, %zu of them tied with another triangle\n", rays, hits, ties);
+    EXPECT_GT(hits, rays / 3);
+    EXPECT_GT(ties, 100u);  // the tie-break is exercised
 }
 
 }  // namespace
