@@ -4,7 +4,8 @@
 #   1. the machine as it is, with whatever carry folder exists: skipped for "no GPU" (on a machine that has a
 #      GPU this run is left out, since the steps would really run there);
 #   2. GPU_CHECK_NO_GPU=1 and a carry folder that does not exist: every step that needs the carry folder
-#      says "no carry folder, run scripts/gpu_prepare.sh".
+#      says "no carry folder, run scripts/gpu_prepare.sh";
+#   3. scripts/gpu_full_tests.sh over a stand-in trazo_tests: its report counts and names what the shards said.
 # Needs no build and no carry folder; takes seconds. Exit 0 pass, 1 fail.
 set -euo pipefail
 repo=${1:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
@@ -50,6 +51,33 @@ else
     run_check as_is "no GPU"
 fi
 run_check no_carry "no carry folder, run scripts/gpu_prepare.sh" GPU_CHECK_NO_GPU=1 GPU_CARRY="$tmp/no-such-carry"
+
+# 3. scripts/gpu_full_tests.sh, which runs after it on a GPU machine, over a stand-in trazo_tests that prints
+# gtest's lines: one test passes in every shard, and the last shard has one failure.
+mkdir -p "$tmp/carry/bin" "$tmp/full"
+cat >"$tmp/carry/bin/trazo_tests" <<'FAKE'
+#!/usr/bin/env bash
+k=${GTEST_SHARD_INDEX:-0} last=$(( ${GTEST_TOTAL_SHARDS:-1} - 1 ))
+echo "[ RUN      ] Fake.Passes$k"
+echo "[       OK ] Fake.Passes$k (0 ms)"
+if [ "$k" = "$last" ]; then
+    printf '%s\n' "[ RUN      ] Fake.Fails" "fake_test.cpp:3: Failure" "Expected: 1 == 2" "[  FAILED  ] Fake.Fails (0 ms)"
+fi
+echo "[==========] $(( k == last ? 2 : 1 )) tests from 1 test suite ran. (0 ms total)"
+echo "[  PASSED  ] 1 test."
+if [ "$k" = "$last" ]; then printf '%s\n' "[  FAILED  ] 1 test, listed below:" "[  FAILED  ] Fake.Fails"; exit 1; fi
+FAKE
+chmod +x "$tmp/carry/bin/trazo_tests"
+shards=$(nproc)
+OUT="$tmp/full" GPU_CARRY="$tmp/carry" timeout 60 bash "$repo/scripts/gpu_full_tests.sh" 20 >"$tmp/full.stdout" 2>&1 \
+    || fail "gpu_full_tests.sh exited non-zero: $(cat "$tmp/full.stdout")"
+report=$tmp/full/full_tests.txt
+echo "== gpu_full_tests:"
+sed 's/^/    /' "$report" 2>/dev/null | head -n 20
+grep -q "^$shards passed, 0 skipped, 1 failed$" "$report" || fail "gpu_full_tests: the counts are not $shards passed, 1 failed"
+[ "$(sed -n '/^## Failed/,/^$/p' "$report" | grep -c '^Fake.Fails$')" = 1 ] || fail "gpu_full_tests: Fake.Fails not listed once"
+grep -q "Expected: 1 == 2" "$report" || fail "gpu_full_tests: the failure's message is missing"
+[ -s "$tmp/full/full_tests.tar.gz" ] || fail "gpu_full_tests: no full_tests.tar.gz"
 
 if (( fails > 0 )); then echo "gpu_check_test: $fails failures"; exit 1; fi
 echo "gpu_check_test: ok"
