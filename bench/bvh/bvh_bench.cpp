@@ -20,6 +20,9 @@
 #if TRAZO_HAVE_EMBREE
 #include "embree_scene.h"
 #endif
+#if TRAZO_BVH_BENCH_GPU_NODES
+#include "gpu_node_width.h"
+#endif
 
 namespace {
 
@@ -266,6 +269,22 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
                                                               (!k.shadow || result[i] == onGpu[i]);
             gpuLines.push_back(std::string(k.name) + ": " + std::to_string(rays.size() / tg * 1e-6) + " Mr/s, " +
                                std::to_string(100.0 * agree / rays.size()) + "% agree with the CPU");
+#if TRAZO_BVH_BENCH_GPU_NODES
+            // The mesh alone (no top level), over four- and eight-wide nodes: would the CPU's eight-wide nodes pay on
+            // the device?
+            const GpuNodeWidthTiming w = timeGpuNodeWidths(nodes, widenBvh(nodes.data(), nodes.size()),
+                                                           scene.arrays.triangles, rays, k.shadow, opt.repeat);
+            char line[256];
+            if (w.ran)
+                std::snprintf(line, sizeof line,
+                              "  mesh only, four-wide %.0f Mr/s, eight-wide %.0f Mr/s (%.2fx), %.4f%% the same answers, "
+                              "%zu rays short of stack",
+                              rays.size() / w.seconds4 * 1e-6, rays.size() / w.seconds8 * 1e-6, w.seconds4 / w.seconds8,
+                              100.0 * w.agree / rays.size(), w.stackOverflows);
+            else
+                std::snprintf(line, sizeof line, "  node widths not measured: %s", w.why.c_str());
+            gpuLines.push_back(line);
+#endif
         }
     }
     if (gpu) {

@@ -162,7 +162,7 @@ TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
 
     CounterUniform u(3);
     const Vec3 origins[] = {{0.3f, 0.2f, 4.0f}, {4.5f, 0.1f, 2.0f}, {-3.0f, 0.5f, -0.5f}, {5.0f, -1.0f, -3.0f}};
-    size_t hits = 0, ties = 0, rays = 0;
+    size_t hits = 0, ties = 0, rays = 0, shadowRays = 0, blockedRays = 0;
     for (const Vec3& origin : origins) {
         for (int batch = 0; batch < 40; ++batch) {
             RayPacket packet;
@@ -178,9 +178,11 @@ TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
             }
             SurfaceHit expected[kPacketRays];
             bool found[kPacketRays];
+            RayPacket shadows = packet;  // segments ending a random way before or after the nearest hit
             for (int i = 0; i < kPacketRays; ++i) {
                 const Ray ray{origin, Vec3(packet.dx[i], packet.dy[i], packet.dz[i])};
                 found[i] = bruteForceNearest(arrays, ray, expected[i]);
+                shadows.tMax[i] = found[i] ? expected[i].t * u(0.5f, 1.5f) : 20.0f;
                 if (!found[i]) continue;
                 ++hits;
                 // A tie: another triangle of the same mesh at exactly this t.
@@ -215,13 +217,32 @@ TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
                         EXPECT_EQ(out[i].hit.b1, expected[i].b1) << where;
                         EXPECT_EQ(out[i].hit.b2, expected[i].b2) << where;
                     }
+                    const std::string kernel = std::string(cpuIsaName(isa)) +
+                                               (view == &fourWide ? " four-wide" : " eight-wide") + ", batch " +
+                                               std::to_string(batch);
+                    const auto occludedPacket = cpuKernelsFor(isa)->occludedPacket;
+                    const uint64_t blocked = occludedPacket ? occludedPacket(*view, origin, shadows, ~0ull) : 0;
+                    RayQuery queries[kPacketRays];
+                    RayAnswer answers[kPacketRays];
+                    for (int i = 0; i < kPacketRays; ++i)
+                        queries[i] = RayQuery{Ray{origin, Vec3(packet.dx[i], packet.dy[i], packet.dz[i])}, shadows.tMax[i]};
+                    cpuKernelsFor(isa)->answerRayQueries(*view, queries, kPacketRays, RayQueryKind::Shadow, answers);
+                    for (int i = 0; i < kPacketRays; ++i) {
+                        const bool expectBlocked = found[i] && expected[i].t < shadows.tMax[i];
+                        shadowRays += 1, blockedRays += expectBlocked;
+                        if (occludedPacket)
+                            EXPECT_EQ(((blocked >> i) & 1) != 0, expectBlocked) << kernel << ", shadow packet lane " << i;
+                        EXPECT_EQ(answers[i].t != 0.0f, expectBlocked) << kernel << ", shadow query " << i;
+                    }
                 }
             }
             rays += kPacketRays;
         }
     }
-    std::printf("cpu_isa: %zu rays, %zu hits, %zu of them tied with another triangle\n", rays, hits, ties);
+    std::printf("cpu_isa: %zu rays, %zu hits, %zu of them tied with another triangle; %zu shadow queries, %zu blocked\n",
+                rays, hits, ties, shadowRays, blockedRays);
     EXPECT_GT(hits, rays / 3);
+    EXPECT_GT(blockedRays, shadowRays / 6);
     EXPECT_GT(ties, 100u);  // the tie-break is exercised
 }
 
