@@ -270,19 +270,20 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
             gpuLines.push_back(std::string(k.name) + ": " + std::to_string(rays.size() / tg * 1e-6) + " Mr/s, " +
                                std::to_string(100.0 * agree / rays.size()) + "% agree with the CPU");
 #if TRAZO_BVH_BENCH_GPU_NODES
-            // The mesh alone (no top level), over four- and eight-wide nodes: would the CPU's eight-wide nodes pay on
-            // the device?
+            // The mesh alone (no top level) over each node format: would the CPU's eight-wide nodes, or quantized
+            // ones, pay on the device?
             const GpuNodeWidthTiming w = timeGpuNodeWidths(nodes, widenBvh(nodes.data(), nodes.size()),
                                                            scene.arrays.triangles, rays, k.shadow, opt.repeat);
-            char line[256];
-            if (w.ran)
-                std::snprintf(line, sizeof line,
-                              "  mesh only, four-wide %.0f Mr/s, eight-wide %.0f Mr/s (%.2fx), %.4f%% the same answers, "
-                              "%zu rays short of stack",
-                              rays.size() / w.seconds4 * 1e-6, rays.size() / w.seconds8 * 1e-6, w.seconds4 / w.seconds8,
-                              100.0 * w.agree / rays.size(), w.stackOverflows);
-            else
-                std::snprintf(line, sizeof line, "  node widths not measured: %s", w.why.c_str());
+            std::string line = "  mesh only: ";
+            if (!w.ran) line += "node formats not measured: " + w.why;
+            for (int f = 0; w.ran && f < kNodeFormats; ++f) {
+                char part[200];
+                std::snprintf(part, sizeof part,
+                              "%s%s %.0f Mr/s (%.2fx, %.4f%% the same answers, %zu rays short of stack)", f ? "; " : "",
+                              kNodeFormatNames[f], rays.size() / w.seconds[f] * 1e-6, w.seconds[0] / w.seconds[f],
+                              100.0 * w.agree[f] / rays.size(), w.stackOverflows[f]);
+                line += part;
+            }
             gpuLines.push_back(line);
 #endif
         }
