@@ -1,7 +1,8 @@
 // What an edit costs in the viewer (issue 15): a scene with a large mesh and a sphere; a full flatten + upload
 // against moving the sphere (flatten reusing the mesh, upload of the changed arrays only), the time from the
-// edit to the first preview pass at several preview divisors, and the picking queries, on the CPU backend.
-//   reupload_bench SCENE [--threads N] [--repeat R]
+// edit to the first preview pass at several preview divisors, and the picking queries, on the CPU backend or
+// another (`--backend cuda`: the viewer's own on a GPU machine).
+//   reupload_bench SCENE [--threads N] [--repeat R] [--backend cpu|cuda]
 // SCENE: e.g. the big_mesh.scene of bench/scene_creation/make_big_mesh.sh (one 1M-triangle mesh); a sphere
 // is added beside whatever it holds.
 #include <algorithm>
@@ -41,15 +42,27 @@ void moveSphere(ViewerSession& session, int step) {
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: reupload_bench SCENE [--threads N] [--repeat R]\n");
+        std::fprintf(stderr, "usage: reupload_bench SCENE [--threads N] [--repeat R] [--backend cpu|cuda]\n");
         return 2;
     }
     unsigned threads = 0;
     int repeat = 5;
+    BackendChoice choice = BackendChoice::Cpu;
     for (int i = 2; i + 1 < argc; i += 2) {
         if (!std::strcmp(argv[i], "--threads")) threads = unsigned(std::atoi(argv[i + 1]));
         else if (!std::strcmp(argv[i], "--repeat")) repeat = std::max(1, std::atoi(argv[i + 1]));
+        else if (!std::strcmp(argv[i], "--backend"))
+            choice = !std::strcmp(argv[i + 1], "cuda") ? BackendChoice::Cuda : BackendChoice::Cpu;
     }
+    auto makeBackend = [&] {
+        std::string why;
+        std::unique_ptr<Backend> backend = createBackend(choice, threads, why);
+        if (!backend) {
+            std::fprintf(stderr, "reupload_bench: %s\n", why.c_str());
+            std::exit(1);
+        }
+        return backend;
+    };
     Diagnostics diags;
     Scene scene = readSceneFile(argv[1], diags);
     if (diags.hasErrors()) {
@@ -66,18 +79,18 @@ int main(int argc, char** argv) {
     // Full: what every edit cost before (flatten from scratch, upload everything to a fresh backend).
     std::vector<double> fullFlatten, fullUpload;
     for (int r = 0; r < repeat; ++r) {
-        std::unique_ptr<Backend> cpu = createCpuBackend(threads);
+        std::unique_ptr<Backend> backend = makeBackend();
         const auto t0 = Clock::now();
         const FlattenResult flat = flatten(scene);
         fullFlatten.push_back(secondsSince(t0));
         const auto t1 = Clock::now();
-        cpu->upload(flat.arrays);
+        backend->upload(flat.arrays);
         fullUpload.push_back(secondsSince(t1));
     }
     std::printf("full flatten + upload:      flatten %8.2f ms  upload %8.2f ms  (median of %d)\n",
                 1e3 * median(fullFlatten), 1e3 * median(fullUpload), repeat);
 
-    ViewerSession session(scene, createCpuBackend(threads), 0, 512, 512);
+    ViewerSession session(scene, makeBackend(), 0, 512, 512);
     std::printf("backend: %s\n", session.backend().deviceName().c_str());
     session.renderPasses(1);
     std::vector<double> flattenS, compareS, uploadS, apply;
