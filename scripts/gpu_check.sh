@@ -3,7 +3,8 @@
 #
 # Runs in the repository root of a copy of the tree on a GPU machine (H100/H200: nvcc and CMake, but no apt,
 # no internet, none of our Debian libraries), with gpu-carry/ beside the tree, made here by
-# scripts/gpu_prepare.sh. The device-tool call:
+# scripts/gpu_prepare.sh, which prints the device-tool call (with the unpacking of gpu-carry.tar.xz first when
+# the folder is too big to carry as it is):
 #     run(command: "bash scripts/gpu_check.sh", carry: ["gpu-carry"], timeout_s: 540)
 # Writes to $OUT (default: a new temp dir), at most the 8 files the tool brings back:
 #   summary.md        one line per step: ran / skipped — reason / failed — reason (read this first)
