@@ -202,6 +202,11 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
         else gpuStatus = error;
     }
     std::vector<std::string> gpuLines;
+#if TRAZO_BVH_BENCH_GPU_NODES
+    // The eight-wide nodes the node-format line traces (made here too where the CPU kernels have none).
+    const std::vector<WideBvhNode8> gpuNodes8 =
+        gpu ? widenBvh(nodes.data(), nodes.size()) : std::vector<WideBvhNode8>{};
+#endif
 
     const RaySets sets = makeRays(scene);
     struct Kind {
@@ -272,8 +277,8 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
 #if TRAZO_BVH_BENCH_GPU_NODES
             // The mesh alone (no top level) over each node format: would the CPU's eight-wide nodes, or quantized
             // ones, pay on the device?
-            const GpuNodeWidthTiming w = timeGpuNodeWidths(nodes, widenBvh(nodes.data(), nodes.size()),
-                                                           scene.arrays.triangles, rays, k.shadow, opt.repeat);
+            const GpuNodeWidthTiming w =
+                timeGpuNodeWidths(nodes, gpuNodes8, scene.arrays.triangles, rays, k.shadow, opt.repeat);
             std::string line = "  mesh only: ";
             if (!w.ran) line += "node formats not measured: " + w.why;
             for (int f = 0; w.ran && f < kNodeFormats; ++f) {

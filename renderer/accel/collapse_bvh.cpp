@@ -10,7 +10,9 @@ namespace {
 
 float binaryNodeArea(const BvhNode& node) { return Aabb{node.boundsMin, node.boundsMax}.surfaceArea(); }
 
-void setLane(WideBvhNode& node, int lane, Vec3 boundsMin, Vec3 boundsMax, uint32_t ref) {
+// For WideBvhNode and WideBvhNode8 alike: the same layout, four or eight lanes.
+template <class Node>
+void setLane(Node& node, int lane, Vec3 boundsMin, Vec3 boundsMax, uint32_t ref) {
     for (int axis = 0; axis < 3; ++axis) {
         node.bounds[axis][0][lane] = boundsMin[axis];
         node.bounds[axis][1][lane] = boundsMax[axis];
@@ -18,11 +20,19 @@ void setLane(WideBvhNode& node, int lane, Vec3 boundsMin, Vec3 boundsMax, uint32
     node.child[lane] = ref;
 }
 
-WideBvhNode emptyWideNode() {
-    WideBvhNode node{};
+template <class Node = WideBvhNode>
+Node emptyWideNode() {
+    Node node{};
     const float inf = std::numeric_limits<float>::infinity();
-    for (int lane = 0; lane < kBvhWidth; ++lane) setLane(node, lane, Vec3(inf), Vec3(-inf), kBvhEmptyLane);
+    for (int lane = 0; lane < int(sizeof(node.child) / sizeof(node.child[0])); ++lane)
+        setLane(node, lane, Vec3(inf), Vec3(-inf), kBvhEmptyLane);
     return node;
+}
+
+// The box of a four-wide node's child `lane`.
+Aabb laneBox(const WideBvhNode& node, int lane) {
+    return Aabb{Vec3(node.bounds[0][0][lane], node.bounds[1][0][lane], node.bounds[2][0][lane]),
+                Vec3(node.bounds[0][1][lane], node.bounds[1][1][lane], node.bounds[2][1][lane])};
 }
 
 uint32_t leafRefOf(const BvhNode& leaf) {
@@ -85,29 +95,14 @@ std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count) {
     struct Lane {
         uint32_t node, lane;
     };
-    auto laneArea = [&](Lane l) {
-        const WideBvhNode& n = nodes[l.node];
-        Aabb box;
-        box.grow(Vec3(n.bounds[0][0][l.lane], n.bounds[1][0][l.lane], n.bounds[2][0][l.lane]));
-        box.grow(Vec3(n.bounds[0][1][l.lane], n.bounds[1][1][l.lane], n.bounds[2][1][l.lane]));
-        return box.surfaceArea();
-    };
+    auto laneArea = [&](Lane l) { return laneBox(nodes[l.node], (int)l.lane).surfaceArea(); };
     auto usedLanes = [&](uint32_t node) {
         uint32_t used = 0;
         for (uint32_t ref : nodes[node].child) used += ref != kBvhEmptyLane;
         return used;
     };
-    auto emptyNode = [] {
-        WideBvhNode8 node{};
-        const float inf = std::numeric_limits<float>::infinity();
-        for (int lane = 0; lane < kBvh8Width; ++lane) {
-            for (int axis = 0; axis < 3; ++axis) node.bounds[axis][0][lane] = inf, node.bounds[axis][1][lane] = -inf;
-            node.child[lane] = kBvhEmptyLane;
-        }
-        return node;
-    };
     out.reserve(count);
-    out.push_back(emptyNode());
+    out.push_back(emptyWideNode<WideBvhNode8>());
     // (four-wide node, the eight-wide node that takes its children), depth first.
     std::vector<std::pair<uint32_t, uint32_t>> pending{{0u, 0u}};
     while (!pending.empty()) {
@@ -142,15 +137,13 @@ std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count) {
                 refs[i] = ref;
             } else {
                 refs[i] = (uint32_t)out.size();
-                out.push_back(emptyNode());
+                out.push_back(emptyWideNode<WideBvhNode8>());
             }
         }
         WideBvhNode8& node = out[made];
         for (int i = 0; i < used; ++i) {
-            const WideBvhNode& from = nodes[lanes[i].node];
-            for (int axis = 0; axis < 3; ++axis)
-                for (int side = 0; side < 2; ++side) node.bounds[axis][side][i] = from.bounds[axis][side][lanes[i].lane];
-            node.child[i] = refs[i];
+            const Aabb box = laneBox(nodes[lanes[i].node], (int)lanes[i].lane);
+            setLane(node, i, box.min, box.max, refs[i]);
         }
         // Children are pushed in reverse so the first lane's subtree is laid out right after this node.
         for (int i = used - 1; i >= 0; --i)
@@ -163,8 +156,9 @@ Aabb wideNodeBounds(const WideBvhNode& node) {
     Aabb b;
     for (int lane = 0; lane < kBvhWidth; ++lane) {
         if (node.child[lane] == kBvhEmptyLane) continue;
-        b.grow(Vec3(node.bounds[0][0][lane], node.bounds[1][0][lane], node.bounds[2][0][lane]));
-        b.grow(Vec3(node.bounds[0][1][lane], node.bounds[1][1][lane], node.bounds[2][1][lane]));
+        const Aabb box = laneBox(node, lane);
+        b.grow(box.min);
+        b.grow(box.max);
     }
     return b;
 }
