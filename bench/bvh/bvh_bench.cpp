@@ -38,7 +38,7 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 struct TriangleScene {
     std::vector<Vec3> triangles;  // original order (what Embree gets)
     SceneArrays arrays;
-    std::vector<WideBvhNode8> meshNodes8;
+    EightWideMeshes meshes8;
     SceneView view;
     Aabb bounds;
 
@@ -52,9 +52,10 @@ struct TriangleScene {
         arrays.objects.push_back({ObjectKind::Mesh, appendMesh(mesh, arrays), 0});
         arrays.topNodes = collapseBvh(buildBvh({wideNodeBounds(arrays.meshNodes[0])}));
         // As the CPU backend's upload: the eight-wide nodes where its AVX2 or AVX-512 kernels run.
-        if (selectCpuKernels().isa != CpuIsa::Sse2) meshNodes8 = widenMeshBvhs(arrays);
+        if (selectCpuKernels().isa != CpuIsa::Sse2) meshes8 = widenMeshBvhs(arrays);
         view = hostView(arrays);
-        view.meshNodes8 = viewOf(meshNodes8);
+        view.meshNodes8 = viewOf(meshes8.nodes);
+        view.triangleBlocks = viewOf(meshes8.blocks);
     }
     // out[i] = the nearest t of queries[i] (+inf on a miss), or 1/0 for a shadow query.
     void answer(const RayQuery* queries, size_t count, bool shadow, float* out) const {
@@ -181,15 +182,18 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
                 "-> %zu wide nodes (depth %u, %.1f MB)\n",
                 build1 * 1e3, buildN * 1e3, threads, binary.nodes.size(), bvhSahCost(binary, triangleBvhOptions()),
                 bvhDepth(binary), nodes.size(), wideBvhDepth(nodes), nodes.size() * sizeof(WideBvhNode) * 1e-6);
-    if (!scene.meshNodes8.empty()) {  // what the CPU backend's upload adds for its AVX2 / AVX-512 kernels
+    if (!scene.meshes8.nodes.empty()) {  // what the CPU backend's upload adds for its AVX2 / AVX-512 kernels
+        SceneArrays arrays = scene.arrays;
         double widen = 1e30;
         for (int r = 0; r < runs; ++r) {
             const auto start = Clock::now();
-            const std::vector<WideBvhNode8> widened = widenBvh(nodes.data(), nodes.size());
+            const EightWideMeshes widened = widenMeshBvhs(arrays);
             widen = std::min(widen, secondsSince(start));
         }
-        std::printf("-> %zu eight-wide nodes for the %s kernels (%.1f MB, made in %.1f ms)\n", scene.meshNodes8.size(),
-                    cpuIsaName(selectCpuKernels().isa), scene.meshNodes8.size() * sizeof(WideBvhNode8) * 1e-6,
+        const EightWideMeshes& m = scene.meshes8;
+        std::printf("-> %zu eight-wide nodes and %zu leaf blocks for the %s kernels (%.1f + %.1f MB, made in %.1f ms)\n",
+                    m.nodes.size(), m.blocks.size(), cpuIsaName(selectCpuKernels().isa),
+                    m.nodes.size() * sizeof(WideBvhNode8) * 1e-6, m.blocks.size() * sizeof(TriangleBlock) * 1e-6,
                     widen * 1e3);
     }
 
@@ -203,7 +207,8 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
     }
     std::vector<std::string> gpuLines;
 #if TRAZO_BVH_BENCH_GPU_NODES
-    // The eight-wide nodes the node-format line traces (made here too where the CPU kernels have none).
+    // The eight-wide nodes the node-format line traces: widenBvh's, whose leaves name triangles (the CPU kernels'
+    // name their TriangleBlocks).
     const std::vector<WideBvhNode8> gpuNodes8 =
         gpu ? widenBvh(nodes.data(), nodes.size()) : std::vector<WideBvhNode8>{};
 #endif

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <stdexcept>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -304,15 +305,43 @@ size_t meshNodeCount(const SceneArrays& arrays, uint32_t shape) {
     return end - arrays.meshes[shape].nodeOffset;
 }
 
-std::vector<WideBvhNode8> widenMeshBvhs(SceneArrays& arrays) {
-    std::vector<WideBvhNode8> nodes;
-    for (uint32_t i = 0; i < arrays.meshes.size(); ++i) {
-        const std::vector<WideBvhNode8> mesh =
-            widenBvh(arrays.meshNodes.data() + arrays.meshes[i].nodeOffset, meshNodeCount(arrays, i));
-        arrays.meshes[i].nodeOffset8 = (uint32_t)nodes.size();
-        nodes.insert(nodes.end(), mesh.begin(), mesh.end());
+namespace {
+
+// The leaf's triangles[first, first + count) transposed; lanes past count repeat the first triangle.
+TriangleBlock transposeLeaf(const MeshTriangle* triangles, uint32_t first, uint32_t count) {
+    TriangleBlock block{};
+    for (uint32_t lane = 0; lane < 4; ++lane) {
+        const MeshTriangle& t = triangles[first + (lane < count ? lane : 0)];
+        const Vec3 vertex[3] = {t.p0, t.p1, t.p2};
+        for (int k = 0; k < 3; ++k)
+            for (int axis = 0; axis < 3; ++axis) block.v[k][axis][lane] = vertex[k][axis];
     }
-    return nodes;
+    block.first = first;
+    return block;
+}
+
+}  // namespace
+
+EightWideMeshes widenMeshBvhs(SceneArrays& arrays) {
+    static_assert(kBvhMaxLeafSize == 4, "a leaf's triangles fill one four-lane block");
+    EightWideMeshes out;
+    for (uint32_t i = 0; i < arrays.meshes.size(); ++i) {
+        MeshShape& shape = arrays.meshes[i];
+        std::vector<WideBvhNode8> mesh = widenBvh(arrays.meshNodes.data() + shape.nodeOffset, meshNodeCount(arrays, i));
+        const MeshTriangle* triangles = arrays.triangles.data() + shape.triangleOffset;
+        for (WideBvhNode8& node : mesh)
+            for (uint32_t& ref : node.child) {
+                if (ref == kBvhEmptyLane || !bvhIsLeaf(ref)) continue;
+                if (out.blocks.size() >= kBvhMaxFirstPrimitive)
+                    throw std::length_error("widenMeshBvhs: more leaves than a child reference can name");
+                const uint32_t count = bvhLeafCount(ref);
+                out.blocks.push_back(transposeLeaf(triangles, bvhLeafFirst(ref), count));
+                ref = bvhLeafRef((uint32_t)out.blocks.size() - 1, count);
+            }
+        shape.nodeOffset8 = (uint32_t)out.nodes.size();
+        out.nodes.insert(out.nodes.end(), mesh.begin(), mesh.end());
+    }
+    return out;
 }
 
 }  // namespace trazo

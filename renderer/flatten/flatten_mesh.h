@@ -35,8 +35,14 @@ uint32_t appendMesh(const MeshData& data, const Affine3& worldFromObject, SceneA
 // The BVH nodes of MeshShape `shape`: meshes' nodes lie in meshNodes one mesh after another.
 size_t meshNodeCount(const SceneArrays& arrays, uint32_t shape);
 
-// Every mesh's eight-wide BVH (widenBvh), one after another, for SceneView::meshNodes8; sets each MeshShape's
-// nodeOffset8 into it. Where the CPU backend's AVX2 or AVX-512 kernels run (backends/cpu/cpu_backend.cpp).
-std::vector<WideBvhNode8> widenMeshBvhs(SceneArrays& arrays);
+// Every mesh's eight-wide BVH (widenBvh), one after another, for SceneView::meshNodes8, and their leaves'
+// triangles transposed (SceneView::triangleBlocks): each leaf reference of these nodes names its block, not its
+// first triangle. Sets each MeshShape's nodeOffset8. Where the CPU backend's AVX2 or AVX-512 kernels run
+// (backends/cpu/cpu_backend.cpp).
+struct EightWideMeshes {
+    std::vector<WideBvhNode8> nodes;
+    std::vector<TriangleBlock> blocks;
+};
+EightWideMeshes widenMeshBvhs(SceneArrays& arrays);
 
 }  // namespace trazo

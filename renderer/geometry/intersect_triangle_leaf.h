@@ -17,6 +17,17 @@ struct MeshTriangle {
     Vec3 p0, p1, p2;
 };
 
+// A leaf's triangles transposed for four-lane tests: v[k][axis][lane] is vertex k of triangle first + lane
+// (lanes past the leaf's count repeat its first triangle). Host only: where the CPU backend traverses meshes
+// over eight-wide nodes, their leaves refer to these (flatten/flatten_mesh.h, widenMeshBvhs), so a leaf test
+// loads its vertices as they are used instead of gathering and transposing four 36-byte triangles.
+struct alignas(16) TriangleBlock {
+    float v[3][3][4];
+    uint32_t first;  // the leaf's first triangle, counted from the mesh's first
+    uint32_t padding[3];
+};
+static_assert(sizeof(TriangleBlock) == 160, "a block is 144 bytes of vertices and the leaf's first triangle");
+
 // Nearest hit among triangles[0, count) within (tMin, tMax): what a loop over intersectTriangle that
 // narrows tMax keeps, i.e. the smallest t, and of equal ones the first. `which` is its index.
 TRAZO_HD bool intersectTrianglesLoop(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin,
@@ -60,21 +71,23 @@ __attribute__((noinline)) inline Triangles4 loadTriangles4(const MeshTriangle* t
     return out;
 }
 
-// intersectSheared for four triangles. Returns the mask of lanes hit within (tMin, tMax), with t and the
-// reciprocal determinant per lane, or −1 when a lane has an edge function of exactly zero: the caller then
-// falls back to the scalar test, which re-evaluates it in double.
-// The triangles are loaded here rather than by the caller, so their transposed vertices stay in registers.
-template <int KZ>
-inline int intersect4Along(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin, float tMax,
-                           __m128& t, __m128& invDet, __m128& v, __m128& w) {
+// Vertex k's coordinates on one axis, four lanes, from either form of a leaf.
+inline __m128 vertexLanes(const Triangles4& tri, int k, int axis) { return tri.v[k][axis]; }
+inline __m128 vertexLanes(const TriangleBlock& block, int k, int axis) { return _mm_load_ps(block.v[k][axis]); }
+
+// intersectSheared for four triangles (Triangles4 or a TriangleBlock). Returns the mask of lanes hit within
+// (tMin, tMax), with t and the reciprocal determinant per lane, or −1 when a lane has an edge function of
+// exactly zero: the caller then falls back to the scalar test, which re-evaluates it in double.
+template <int KZ, class Leaf>
+inline int intersect4Along(const TriangleRay& r, const Leaf& tri, float tMin, float tMax, __m128& t, __m128& invDet,
+                           __m128& v, __m128& w) {
     constexpr int KX = KZ == 2 ? 0 : KZ + 1, KY = KX == 2 ? 0 : KX + 1;
-    const Triangles4 tri = loadTriangles4(triangles, count);
     const __m128 ox = _mm_set1_ps(r.origin[KX]), oy = _mm_set1_ps(r.origin[KY]), oz = _mm_set1_ps(r.origin[KZ]);
     const __m128 sx = _mm_set1_ps(r.sx), sy = _mm_set1_ps(r.sy), sz = _mm_set1_ps(r.sz);
     __m128 x[3], y[3], z[3];
     for (int k = 0; k < 3; ++k) {
-        const __m128 px = _mm_sub_ps(tri.v[k][KX], ox), py = _mm_sub_ps(tri.v[k][KY], oy);
-        z[k] = _mm_sub_ps(tri.v[k][KZ], oz);
+        const __m128 px = _mm_sub_ps(vertexLanes(tri, k, KX), ox), py = _mm_sub_ps(vertexLanes(tri, k, KY), oy);
+        z[k] = _mm_sub_ps(vertexLanes(tri, k, KZ), oz);
         x[k] = _mm_sub_ps(px, _mm_mul_ps(sx, z[k]));
         y[k] = _mm_sub_ps(py, _mm_mul_ps(sy, z[k]));
     }
@@ -100,11 +113,35 @@ inline int intersect4Along(const TriangleRay& r, const MeshTriangle* triangles, 
     return _mm_movemask_ps(hit);
 }
 
+// The triangles are transposed here rather than by the caller, so their vertices stay in registers.
 inline int intersect4(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin, float tMax,
                       __m128& t, __m128& invDet, __m128& v, __m128& w) {
-    if (r.kz == 2) return intersect4Along<2>(r, triangles, count, tMin, tMax, t, invDet, v, w);
-    if (r.kz == 0) return intersect4Along<0>(r, triangles, count, tMin, tMax, t, invDet, v, w);
-    return intersect4Along<1>(r, triangles, count, tMin, tMax, t, invDet, v, w);
+    const Triangles4 tri = loadTriangles4(triangles, count);
+    if (r.kz == 2) return intersect4Along<2>(r, tri, tMin, tMax, t, invDet, v, w);
+    if (r.kz == 0) return intersect4Along<0>(r, tri, tMin, tMax, t, invDet, v, w);
+    return intersect4Along<1>(r, tri, tMin, tMax, t, invDet, v, w);
+}
+
+inline int intersect4(const TriangleRay& r, const TriangleBlock& block, float tMin, float tMax, __m128& t,
+                      __m128& invDet, __m128& v, __m128& w) {
+    if (r.kz == 2) return intersect4Along<2>(r, block, tMin, tMax, t, invDet, v, w);
+    if (r.kz == 0) return intersect4Along<0>(r, block, tMin, tMax, t, invDet, v, w);
+    return intersect4Along<1>(r, block, tMin, tMax, t, invDet, v, w);
+}
+
+// The nearest of the lanes in `mask` (the first of equal ones), as intersectTrianglesLoop would report it.
+inline bool nearestLane(int mask, __m128 t, __m128 invDet, __m128 v, __m128 w, TriangleHit& hit, uint32_t& which) {
+    if (!mask) return false;
+    alignas(16) float ts[4], invDets[4], vs[4], ws[4];
+    _mm_store_ps(ts, t), _mm_store_ps(invDets, invDet), _mm_store_ps(vs, v), _mm_store_ps(ws, w);
+    int best = -1;
+    for (int k = 0; k < 4; ++k)
+        if ((mask & (1 << k)) && (best < 0 || ts[k] < ts[best])) best = k;
+    hit.t = ts[best];
+    hit.b1 = vs[best] * invDets[best];
+    hit.b2 = ws[best] * invDets[best];
+    which = (uint32_t)best;
+    return true;
 }
 
 }  // namespace triangle_detail
@@ -118,22 +155,24 @@ TRAZO_HD bool intersectTriangleLeaf(const TriangleRay& r, const MeshTriangle* tr
     __m128 t, invDet, v, w;
     int mask = intersect4(r, triangles, count, tMin, tMax, t, invDet, v, w);
     if (mask < 0) return intersectTrianglesLoop(r, triangles, count, tMin, tMax, hit, which);
-    mask &= (1 << count) - 1;
-    if (!mask) return false;
-    alignas(16) float ts[4], invDets[4], vs[4], ws[4];
-    _mm_store_ps(ts, t), _mm_store_ps(invDets, invDet), _mm_store_ps(vs, v), _mm_store_ps(ws, w);
-    int best = -1;
-    for (int k = 0; k < 4; ++k)
-        if ((mask & (1 << k)) && (best < 0 || ts[k] < ts[best])) best = k;
-    hit.t = ts[best];
-    hit.b1 = vs[best] * invDets[best];
-    hit.b2 = ws[best] * invDets[best];
-    which = (uint32_t)best;
-    return true;
+    return nearestLane(mask & ((1 << count) - 1), t, invDet, v, w, hit, which);
 #else
     return intersectTrianglesLoop(r, triangles, count, tMin, tMax, hit, which);
 #endif
 }
+
+#if TRAZO_HOST_SSE
+// intersectTriangleLeaf over a leaf's block (its triangles: the mesh's triangles from block.first), the same
+// answer bit for bit.
+inline bool intersectTriangleBlock(const TriangleRay& r, const TriangleBlock& block, const MeshTriangle* triangles,
+                                   uint32_t count, float tMin, float tMax, TriangleHit& hit, uint32_t& which) {
+    using namespace triangle_detail;
+    __m128 t, invDet, v, w;
+    const int mask = intersect4(r, block, tMin, tMax, t, invDet, v, w);
+    if (mask < 0) return intersectTrianglesLoop(r, triangles + block.first, count, tMin, tMax, hit, which);
+    return nearestLane(mask & ((1 << count) - 1), t, invDet, v, w, hit, which);
+}
+#endif
 
 // Whether any of the leaf's triangles[0, count) is hit within (tMin, tMax).
 TRAZO_HD bool triangleLeafBlocks(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin,

@@ -18,6 +18,7 @@ TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
 struct CsgNodeData;
 struct MeshTriangle;
+struct TriangleBlock;
 struct TriangleCorners;
 struct WideBvhNode;
 struct WideBvhNode8;
@@ -58,8 +59,10 @@ struct SceneView {
     RenderSettings settings;
     FeatureMask features;
     // Host only, outside the uploaded list: the meshes' eight-wide BVHs (MeshShape::nodeOffset8), where the CPU
-    // backend's AVX2 or AVX-512 kernels run (widenMeshBvhs, flatten/flatten_mesh.h); empty elsewhere.
+    // backend's AVX2 or AVX-512 kernels run, and the blocks their leaves name (widenMeshBvhs,
+    // flatten/flatten_mesh.h); empty elsewhere.
     ArrayView<WideBvhNode8> meshNodes8;
+    ArrayView<TriangleBlock> triangleBlocks;
 };
 
 }  // namespace trazo

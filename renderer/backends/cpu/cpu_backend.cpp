@@ -112,16 +112,16 @@ private:
     // made again when the meshes changed (widenMeshBvhs: 11 ms and 20 MB for a million triangles, against
     // 0.4 s for their BVH; build/bench/bvh/bvh_bench).
     void makeView(bool meshesChanged) {
-        if (meshesChanged)
-            meshNodes8_ = kernels_.isa != CpuIsa::Sse2 ? widenMeshBvhs(arrays_) : std::vector<WideBvhNode8>{};
+        if (meshesChanged) meshes8_ = kernels_.isa != CpuIsa::Sse2 ? widenMeshBvhs(arrays_) : EightWideMeshes{};
         view_ = hostView(arrays_);
-        view_.meshNodes8 = viewOf(meshNodes8_);
+        view_.meshNodes8 = viewOf(meshes8_.nodes);
+        view_.triangleBlocks = viewOf(meshes8_.blocks);
     }
 
     ThreadPool pool_;  // started with the backend, for every pass it renders
     const CpuKernels& kernels_;
     SceneArrays arrays_;
-    std::vector<WideBvhNode8> meshNodes8_;
+    EightWideMeshes meshes8_;
     SceneView view_{};
     uint32_t width_ = 0, height_ = 0;
     std::vector<AccumPixel> accum_;

@@ -155,10 +155,11 @@ bool bruteForceNearest(const SceneArrays& arrays, const Ray& ray, SurfaceHit& ou
 TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
     SceneArrays arrays = twoMeshes();
     const SceneView fourWide = hostView(arrays);
-    const std::vector<WideBvhNode8> nodes8 = widenMeshBvhs(arrays);
-    ASSERT_FALSE(nodes8.empty());
+    const EightWideMeshes meshes8 = widenMeshBvhs(arrays);
+    ASSERT_FALSE(meshes8.nodes.empty());
     SceneView eightWide = hostView(arrays);
-    eightWide.meshNodes8 = viewOf(nodes8);
+    eightWide.meshNodes8 = viewOf(meshes8.nodes);
+    eightWide.triangleBlocks = viewOf(meshes8.blocks);
 
     CounterUniform u(3);
     const Vec3 origins[] = {{0.3f, 0.2f, 4.0f}, {4.5f, 0.1f, 2.0f}, {-3.0f, 0.5f, -0.5f}, {5.0f, -1.0f, -3.0f}};
@@ -230,8 +231,9 @@ TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
                     for (int i = 0; i < kPacketRays; ++i) {
                         const bool expectBlocked = found[i] && expected[i].t < shadows.tMax[i];
                         shadowRays += 1, blockedRays += expectBlocked;
-                        if (occludedPacket)
+                        if (occludedPacket) {
                             EXPECT_EQ(((blocked >> i) & 1) != 0, expectBlocked) << kernel << ", shadow packet lane " << i;
+                        }
                         EXPECT_EQ(answers[i].t != 0.0f, expectBlocked) << kernel << ", shadow query " << i;
                     }
                 }
