@@ -88,9 +88,9 @@ std::vector<WideBvhNode> collapseBvh(const Bvh& bvh) {
     return out;
 }
 
-std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count) {
-    std::vector<WideBvhNode8> out;
-    if (count == 0) return out;
+void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>& out) {
+    if (count == 0) return;
+    const size_t base = out.size();  // the root; references count from it
     // A lane of the node being made: a child of some four-wide node (which node, which of its lanes).
     struct Lane {
         uint32_t node, lane;
@@ -101,7 +101,7 @@ std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count) {
         for (uint32_t ref : nodes[node].child) used += ref != kBvhEmptyLane;
         return used;
     };
-    out.reserve(count);
+    out.reserve(base + count);
     out.push_back(emptyWideNode<WideBvhNode8>());
     // (four-wide node, the eight-wide node that takes its children), depth first.
     std::vector<std::pair<uint32_t, uint32_t>> pending{{0u, 0u}};
@@ -136,11 +136,11 @@ std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count) {
             if (bvhIsLeaf(ref)) {
                 refs[i] = ref;
             } else {
-                refs[i] = (uint32_t)out.size();
+                refs[i] = (uint32_t)(out.size() - base);
                 out.push_back(emptyWideNode<WideBvhNode8>());
             }
         }
-        WideBvhNode8& node = out[made];
+        WideBvhNode8& node = out[base + made];
         for (int i = 0; i < used; ++i) {
             const Aabb box = laneBox(nodes[lanes[i].node], (int)lanes[i].lane);
             setLane(node, i, box.min, box.max, refs[i]);
@@ -149,6 +149,11 @@ std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count) {
         for (int i = used - 1; i >= 0; --i)
             if (!bvhIsLeaf(refs[i])) pending.push_back({nodes[lanes[i].node].child[lanes[i].lane], refs[i]});
     }
+}
+
+std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count) {
+    std::vector<WideBvhNode8> out;
+    widenBvh(nodes, count, out);
     return out;
 }
 

@@ -309,7 +309,7 @@ namespace {
 
 // The leaf's triangles[first, first + count) transposed; lanes past count repeat the first triangle.
 TriangleBlock transposeLeaf(const MeshTriangle* triangles, uint32_t first, uint32_t count) {
-    TriangleBlock block{};
+    TriangleBlock block;
     for (uint32_t lane = 0; lane < 4; ++lane) {
         const MeshTriangle& t = triangles[first + (lane < count ? lane : 0)];
         const Vec3 vertex[3] = {t.p0, t.p1, t.p2};
@@ -317,14 +317,20 @@ TriangleBlock transposeLeaf(const MeshTriangle* triangles, uint32_t first, uint3
             for (int axis = 0; axis < 3; ++axis) block.v[k][axis][lane] = vertex[k][axis];
     }
     block.first = first;
+    block.padding[0] = block.padding[1] = block.padding[2] = 0;
     return block;
 }
 
 }  // namespace
 
-EightWideMeshes widenMeshBvhs(SceneArrays& arrays) {
+void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out) {
     static_assert(kBvhMaxLeafSize == 4, "a leaf's triangles fill one four-lane block");
-    EightWideMeshes out;
+    out.nodes.clear();
+    out.blocks.clear();
+    size_t leaves = 0;  // the four-wide trees have the same leaves
+    for (const WideBvhNode& node : arrays.meshNodes)
+        for (uint32_t ref : node.child) leaves += ref != kBvhEmptyLane && bvhIsLeaf(ref);
+    out.blocks.reserve(leaves);
     for (uint32_t i = 0; i < arrays.meshes.size(); ++i) {
         MeshShape& shape = arrays.meshes[i];
         std::vector<WideBvhNode8> mesh = widenBvh(arrays.meshNodes.data() + shape.nodeOffset, meshNodeCount(arrays, i));
@@ -341,7 +347,6 @@ EightWideMeshes widenMeshBvhs(SceneArrays& arrays) {
         shape.nodeOffset8 = (uint32_t)out.nodes.size();
         out.nodes.insert(out.nodes.end(), mesh.begin(), mesh.end());
     }
-    return out;
 }
 
 }  // namespace trazo

@@ -28,6 +28,11 @@ struct alignas(16) TriangleBlock {
 };
 static_assert(sizeof(TriangleBlock) == 160, "a block is 144 bytes of vertices and the leaf's first triangle");
 
+// Vertex k (0, 1, 2 for p0, p1, p2) of the block's triangle in `lane`.
+inline Vec3 blockVertex(const TriangleBlock& block, int k, uint32_t lane) {
+    return Vec3(block.v[k][0][lane], block.v[k][1][lane], block.v[k][2][lane]);
+}
+
 // Nearest hit among triangles[0, count) within (tMin, tMax): what a loop over intersectTriangle that
 // narrows tMax keeps, i.e. the smallest t, and of equal ones the first. `which` is its index.
 TRAZO_HD bool intersectTrianglesLoop(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin,

@@ -112,7 +112,7 @@ private:
     // made again when the meshes changed (widenMeshBvhs: 11 ms and 20 MB for a million triangles, against
     // 0.4 s for their BVH; build/bench/bvh/bvh_bench).
     void makeView(bool meshesChanged) {
-        if (meshesChanged) meshes8_ = kernels_.isa != CpuIsa::Sse2 ? widenMeshBvhs(arrays_) : EightWideMeshes{};
+        if (meshesChanged && kernels_.isa != CpuIsa::Sse2) widenMeshBvhs(arrays_, meshes8_);
         view_ = hostView(arrays_);
         view_.meshNodes8 = viewOf(meshes8_.nodes);
         view_.triangleBlocks = viewOf(meshes8_.blocks);
