@@ -21,6 +21,8 @@ std::vector<WideBvhNode> collapseBvh(const Bvh& bvh);
 // query answers the same over either tree; every node is at least as deep in the four-wide tree, so a
 // traversal keeps at most kBvh8StackSize entries. Laid out depth first, the root at 0; empty for count = 0.
 std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count);
+// The same appended to `out`, its references counted from the first node appended.
+void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>& out);
 
 // The most entries a traversal of this BVH (nodes[0] its root, `count` nodes) keeps on its stack: each interior
 // node on the way down pushes the children it enters but one, so a node needs (children − 1) above what its

@@ -331,12 +331,14 @@ void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out) {
     for (const WideBvhNode& node : arrays.meshNodes)
         for (uint32_t ref : node.child) leaves += ref != kBvhEmptyLane && bvhIsLeaf(ref);
     out.blocks.reserve(leaves);
+    out.nodes.reserve(arrays.meshNodes.size());  // an eight-wide tree has fewer nodes than its four-wide one
     for (uint32_t i = 0; i < arrays.meshes.size(); ++i) {
         MeshShape& shape = arrays.meshes[i];
-        std::vector<WideBvhNode8> mesh = widenBvh(arrays.meshNodes.data() + shape.nodeOffset, meshNodeCount(arrays, i));
+        shape.nodeOffset8 = (uint32_t)out.nodes.size();
+        widenBvh(arrays.meshNodes.data() + shape.nodeOffset, meshNodeCount(arrays, i), out.nodes);
         const MeshTriangle* triangles = arrays.triangles.data() + shape.triangleOffset;
-        for (WideBvhNode8& node : mesh)
-            for (uint32_t& ref : node.child) {
+        for (size_t n = shape.nodeOffset8; n < out.nodes.size(); ++n)
+            for (uint32_t& ref : out.nodes[n].child) {
                 if (ref == kBvhEmptyLane || !bvhIsLeaf(ref)) continue;
                 if (out.blocks.size() >= kBvhMaxFirstPrimitive)
                     throw std::length_error("widenMeshBvhs: more leaves than a child reference can name");
@@ -344,8 +346,6 @@ void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out) {
                 out.blocks.push_back(transposeLeaf(triangles, bvhLeafFirst(ref), count));
                 ref = bvhLeafRef((uint32_t)out.blocks.size() - 1, count);
             }
-        shape.nodeOffset8 = (uint32_t)out.nodes.size();
-        out.nodes.insert(out.nodes.end(), mesh.begin(), mesh.end());
     }
 }
 
