@@ -54,8 +54,7 @@ struct TriangleScene {
         // As the CPU backend's upload: the eight-wide nodes where its AVX2 or AVX-512 kernels run.
         if (selectCpuKernels().isa != CpuIsa::Sse2) widenMeshBvhs(arrays, meshes8);
         view = hostView(arrays);
-        view.meshNodes8 = viewOf(meshes8.nodes);
-        view.triangleBlocks = viewOf(meshes8.blocks);
+        viewEightWide(view, meshes8);
     }
     // out[i] = the nearest t of queries[i] (+inf on a miss), or 1/0 for a shadow query.
     void answer(const RayQuery* queries, size_t count, bool shadow, float* out) const {

@@ -47,4 +47,10 @@ struct EightWideMeshes {
 };
 void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out);
 
+// Points the view's host-only eight-wide arrays at `meshes` (both, or a leaf names a block that is not there).
+inline void viewEightWide(SceneView& view, const EightWideMeshes& meshes) {
+    view.meshNodes8 = viewOf(meshes.nodes);
+    view.triangleBlocks = viewOf(meshes.blocks);
+}
+
 }  // namespace trazo

@@ -158,7 +158,8 @@ TEST(WidenMeshBvhs, EveryLeafNamesABlockOfItsOwnTriangles) {
                     if (k < count) ++triangleUses[block.first + k];
                 }
             }
-        for (uint32_t i = 0; i < shape.triangleCount; ++i) EXPECT_EQ(triangleUses[i], 1) << "mesh " << m << ", triangle " << i;
+        for (uint32_t i = 0; i < shape.triangleCount; ++i)
+            EXPECT_EQ(triangleUses[i], 1) << "mesh " << m << ", triangle " << i;
     }
     for (size_t b = 0; b < blockUses.size(); ++b) EXPECT_EQ(blockUses[b], 1) << "block " << b;
 }

@@ -114,8 +114,7 @@ private:
     void makeView(bool meshesChanged) {
         if (meshesChanged && kernels_.isa != CpuIsa::Sse2) widenMeshBvhs(arrays_, meshes8_);
         view_ = hostView(arrays_);
-        view_.meshNodes8 = viewOf(meshes8_.nodes);
-        view_.triangleBlocks = viewOf(meshes8_.blocks);
+        viewEightWide(view_, meshes8_);
     }
 
     ThreadPool pool_;  // started with the backend, for every pass it renders

@@ -159,8 +159,7 @@ TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
     widenMeshBvhs(arrays, meshes8);
     ASSERT_FALSE(meshes8.nodes.empty());
     SceneView eightWide = hostView(arrays);
-    eightWide.meshNodes8 = viewOf(meshes8.nodes);
-    eightWide.triangleBlocks = viewOf(meshes8.blocks);
+    viewEightWide(eightWide, meshes8);
 
     CounterUniform u(3);
     const Vec3 origins[] = {{0.3f, 0.2f, 4.0f}, {4.5f, 0.1f, 2.0f}, {-3.0f, 0.5f, -0.5f}, {5.0f, -1.0f, -3.0f}};
