@@ -71,6 +71,9 @@ inline unsigned intersectChildrenSse(const NodeRay& r, const WideBvhNode& node, 
                                      float tEntry[kBvhWidth]) {
     __m128 t0 = _mm_set1_ps(tMin), t1 = _mm_set1_ps(tMax);
     const float* bounds = &node.bounds[0][0][0];
+#if !defined(__CUDACC__)  // nvcc's host pass reads this code too, and knows no GCC pragma
+#pragma GCC unroll 3  // GCC would loop over the axes (3-4 % of a ray's time, bvh_bench)
+#endif
     for (int axis = 0; axis < 3; ++axis) {
         const __m128 origin = r.originLanes[axis], inv = r.invLanes[axis];
         const __m128 tNear = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(bounds + r.entryOffset[axis]), origin), inv);

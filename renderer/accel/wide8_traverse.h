@@ -37,6 +37,7 @@ inline unsigned intersectChildren8(const NodeRay8& r, const WideBvhNode8& node, 
                                    float tEntry[kBvh8Width]) {
     __m256 t0 = _mm256_set1_ps(tMin), t1 = _mm256_set1_ps(tMax);
     const float* bounds = &node.bounds[0][0][0];
+#pragma GCC unroll 3  // as intersectChildrenSse
     for (int axis = 0; axis < 3; ++axis) {
         const __m256 origin = r.origin[axis], inv = r.invDirection[axis];
         const __m256 tNear = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(bounds + r.entryOffset[axis]), origin), inv);
