@@ -60,6 +60,36 @@ TEST(MeshRender, TessellatedSphereLooksLikeTheAnalyticSphere) {
     EXPECT_LT(rmse(mesh, analytic), 0.01);
 }
 
+// intersectScene and occluded over the scene against a loop over every object, for rays from origins in
+// [-15, 15]³; returns how many found something.
+int checkAgainstBruteForce(const SceneView& view, std::mt19937& gen, int rays) {
+    std::uniform_real_distribution<float> U(-10.0f, 10.0f);
+    int hits = 0;
+    for (int i = 0; i < rays; ++i) {
+        const Vec3 origin(U(gen) * 1.5f, U(gen) * 1.5f, U(gen) * 1.5f);
+        const Ray ray{origin, normalize(Vec3(U(gen), U(gen), U(gen)))};
+        float tBest = INFINITY;
+        uint32_t objectBest = kNoObject;
+        for (uint32_t o = 0; o < view.objects.count; ++o) {
+            ShapeHit h;
+            if (intersectObject(view, view.objects[o], ray, tBest, h)) {
+                tBest = h.t;
+                objectBest = o;
+            }
+        }
+        SurfaceHit hit;
+        const bool found = intersectScene(view, ray, INFINITY, hit);
+        EXPECT_EQ(found, objectBest != kNoObject) << "ray " << i;
+        if (!found || objectBest == kNoObject) continue;
+        ++hits;
+        EXPECT_EQ(hit.t, tBest) << "ray " << i;
+        EXPECT_EQ(hit.object, objectBest) << "ray " << i;
+        EXPECT_EQ(occluded(view, ray, tBest * 1.0001f), true);
+        EXPECT_EQ(occluded(view, ray, tBest * 0.9999f), false) << "ray " << i;
+    }
+    return hits;
+}
+
 // 300 random spheres, boxes and cylinders: intersectScene (top-level BVH) against every object in turn.
 TEST(SceneBvh, NearestHitEqualsBruteForce) {
     std::mt19937 gen(11);
@@ -79,30 +109,30 @@ TEST(SceneBvh, NearestHitEqualsBruteForce) {
     const FlattenResult flat = flatten(scene);
     const SceneView view = hostView(flat.arrays);
     ASSERT_EQ(view.objects.count, 300u);
-    int hits = 0;
-    for (int i = 0; i < 20000; ++i) {
-        const Vec3 origin(U(gen) * 1.5f, U(gen) * 1.5f, U(gen) * 1.5f);
-        const Ray ray{origin, normalize(Vec3(U(gen), U(gen), U(gen)))};
-        float tBest = INFINITY;
-        uint32_t objectBest = kNoObject;
-        for (uint32_t o = 0; o < view.objects.count; ++o) {
-            ShapeHit h;
-            if (intersectObject(view, view.objects[o], ray, tBest, h)) {
-                tBest = h.t;
-                objectBest = o;
-            }
-        }
-        SurfaceHit hit;
-        const bool found = intersectScene(view, ray, INFINITY, hit);
-        ASSERT_EQ(found, objectBest != kNoObject) << "ray " << i;
-        if (!found) continue;
-        ++hits;
-        EXPECT_EQ(hit.t, tBest) << "ray " << i;
-        EXPECT_EQ(hit.object, objectBest) << "ray " << i;
-        EXPECT_EQ(occluded(view, ray, tBest * 1.0001f), true);
-        EXPECT_EQ(occluded(view, ray, tBest * 0.9999f), false) << "ray " << i;
+    ASSERT_EQ(loneLeaf(view.topNodes.data), kBvhEmptyLane);
+    EXPECT_GT(checkAgainstBruteForce(view, gen, 20000), 4000);  // about a quarter of the rays find something
+}
+
+// A top level that is one leaf is not traversed (loneLeaf): its objects answer alone, rays that miss their
+// box included.
+TEST(SceneBvh, OneLeafTopLevelEqualsBruteForce) {
+    const std::string obj = writeSphereObj(8, 16);
+    const std::vector<std::string> scenes = {
+        "Box\n{\nScale 12 10 8\nRotation 1 2 3 40\nTranslation 1 2 3\n}\n",
+        "Mesh\n{\nSource \"" + obj + "\"\nScale 8 8 8\n}\n",
+        "Sphere\n{\nCenter 0 0 0\nRadius 7\n}\nSphere\n{\nCenter 0.5 0 0\nRadius 7\n}\n"};
+    for (const std::string& objects : scenes) {
+        Diagnostics diags;
+        const Scene scene = readSceneText("Camera\n{\nPOV 0 0 30\nPOI 0 0 0\n}\n" + objects, tempPath("lone.scene"), diags);
+        ASSERT_FALSE(diags.hasErrors()) << objects;
+        const FlattenResult flat = flatten(scene);
+        const SceneView view = hostView(flat.arrays);
+        ASSERT_NE(loneLeaf(view.topNodes.data), kBvhEmptyLane) << objects;
+        std::mt19937 gen(5);
+        const int hits = checkAgainstBruteForce(view, gen, 4000);
+        EXPECT_GT(hits, 200) << objects;
+        EXPECT_LT(hits, 3800) << objects;  // and many miss
     }
-    EXPECT_GT(hits, 4000);  // about a quarter of the rays find something
 }
 
 }  // namespace

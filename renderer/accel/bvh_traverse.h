@@ -234,6 +234,13 @@ TRAZO_HD uint32_t pushLaterChildren(const WideBvhNode& node, unsigned mask, uint
 
 }  // namespace bvh_detail
 
+// The leaf that is the whole tree (collapseBvh puts a root leaf in lane 0 and no other lane is used), or
+// kBvhEmptyLane. A caller whose leaf test is exact by itself can skip the traversal of such a tree: its one box
+// test would only repeat what the leaf's primitives decide (intersectScene's top level).
+TRAZO_HD uint32_t loneLeaf(const WideBvhNode* nodes) {
+    return nodes[0].child[1] == kBvhEmptyLane ? nodes[0].child[0] : kBvhEmptyLane;
+}
+
 // Closest hit within (tMin, tMax). leaf(first, count, tMax) tests primitives [first, first + count), shrinks
 // tMax on a closer hit and returns whether it hit. Returns whether any leaf hit; tMax is then the nearest t.
 // `nodes` must hold a non-empty BVH (a BVH over zero primitives has no root: skip it).

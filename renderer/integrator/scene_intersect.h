@@ -77,7 +77,17 @@ TRAZO_HD bool intersectScene(const SceneView& scene, const Ray& ray, float tMax,
             }
             return any;
         };
-        if (traverseClosest(scene.topNodes.data, ray, 0.0f, tMax, stack, leaf)) {
+#if TRAZO_DEVICE_PATHS
+        const bool topHit = traverseClosest(scene.topNodes.data, ray, 0.0f, tMax, stack, leaf);
+#else
+        // A top level that is one leaf (one object, or a few close ones) is not traversed: its box test only
+        // repeats its objects' own (bvh_bench's one-mesh scenes: 1.04-1.21x the rays a second). The device keeps
+        // the traversal: a second call site of the leaf put a render kernel over its spill budget (kernel_budget).
+        const uint32_t lone = loneLeaf(scene.topNodes.data);
+        const bool topHit = lone != kBvhEmptyLane ? leaf(bvhLeafFirst(lone), bvhLeafCount(lone), tMax)
+                                                  : traverseClosest(scene.topNodes.data, ray, 0.0f, tMax, stack, leaf);
+#endif
+        if (topHit) {
             tMax = best.t;
             out = SurfaceHit{best.t, best.normal, bestObject, 0, best.triangle, best.b1, best.b2};
             found = true;
@@ -100,6 +110,10 @@ TRAZO_HD bool occluded(const SceneView& scene, const Ray& ray, float tMax) {
         }
         return false;
     };
+#if !TRAZO_DEVICE_PATHS
+    const uint32_t lone = loneLeaf(scene.topNodes.data);  // as in intersectScene
+    if (lone != kBvhEmptyLane) return leaf(bvhLeafFirst(lone), bvhLeafCount(lone), tMax);
+#endif
     return traverseAny(scene.topNodes.data, ray, 0.0f, tMax, stack, leaf);
 }
 
