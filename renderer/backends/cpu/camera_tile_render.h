@@ -18,6 +18,12 @@ namespace trazo {
 namespace {
 
 #if TRAZO_SHADOW_PACKETS
+#if !defined(TRAZO_FLATTEN_PACKET_KERNELS) || TRAZO_FLATTEN_PACKET_KERNELS
+#define TRAZO_PACKET_KERNEL_FLATTEN __attribute__((flatten))
+#else
+#define TRAZO_PACKET_KERNEL_FLATTEN
+#endif
+
 constexpr uint32_t kPacketSide = 8;  // a block of kPacketSide² ≤ kPacketRays pixels traces its camera rays together
 static_assert(kPacketSide * kPacketSide <= (uint32_t)kPacketRays, "a block's rays fit one packet");
 
@@ -25,10 +31,12 @@ static_assert(kPacketSide * kPacketSide <= (uint32_t)kPacketRays, "a block's ray
 // cameraPacketsApply, and for F that blockShadingServes the block's pixels shaded together (shadeBlock): the same
 // samples, bit for bit. Per pixel the passes still add in pass order. flatten:
 // everything the block loop calls is inlined into it (GCC's own choice left the shading and shadow rays out of
-// line here: 5% more instructions on scene1_point).
+// line here: 5% more instructions on scene1_point). The sanitizer build turns it off (TRAZO_FLATTEN_PACKET_KERNELS,
+// renderer/CMakeLists.txt): instrumented, these flattened kernels took most of that build's time.
 template <FeatureMask F>
-__attribute__((flatten)) uint64_t renderTilePassesInPackets(const SceneView& scene, const FrameParams& frame, Tile tile,
-                                                            uint32_t firstPass, uint32_t passCount, AccumPixel* accum) {
+TRAZO_PACKET_KERNEL_FLATTEN uint64_t renderTilePassesInPackets(const SceneView& scene, const FrameParams& frame,
+                                                               Tile tile, uint32_t firstPass, uint32_t passCount,
+                                                               AccumPixel* accum) {
     uint64_t rays = 0;
     RayPacket packet;
     TracedRay hits[kPacketRays];
