@@ -35,6 +35,17 @@ Aabb laneBox(const WideBvhNode& node, int lane) {
                 Vec3(node.bounds[0][1][lane], node.bounds[1][1][lane], node.bounds[2][1][lane])};
 }
 
+// The number of children of a four-wide node whose children are all leaves (they fill its first lanes), else 0.
+uint32_t leafOnlyChildren(const WideBvhNode& node) {
+    uint32_t n = 0;
+    for (uint32_t ref : node.child) {
+        if (ref == kBvhEmptyLane) break;
+        if (!bvhIsLeaf(ref)) return 0;
+        ++n;
+    }
+    return n;
+}
+
 uint32_t leafRefOf(const BvhNode& leaf) {
     if (leaf.primCount > kBvhMaxLeafSize || leaf.firstOrChild >= kBvhMaxFirstPrimitive)
         throw std::length_error("collapseBvh: a leaf is too large or starts too far to fit a child reference");
@@ -88,7 +99,8 @@ std::vector<WideBvhNode> collapseBvh(const Bvh& bvh) {
     return out;
 }
 
-void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>& out) {
+void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>& out, std::vector<uint32_t>* leaves,
+              uint32_t groupLeaves) {
     if (count == 0) return;
     const size_t base = out.size();  // the root; references count from it
     // A lane of the node being made: a child of some four-wide node (which node, which of its lanes).
@@ -130,11 +142,21 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
                 first = false;
             }
         }
+        // A run of leaves in `leaves`, as a lane's reference.
+        auto leafRun = [&](const uint32_t* refs, uint32_t n) {
+            if (leaves->size() + n > kBvhMaxFirstPrimitive)
+                throw std::length_error("widenBvh: more leaves than a child reference can name");
+            const uint32_t first = (uint32_t)leaves->size();
+            leaves->insert(leaves->end(), refs, refs + n);
+            return bvhLeafRef(first, n);
+        };
         uint32_t refs[kBvh8Width];
         for (int i = 0; i < used; ++i) {
             const uint32_t ref = nodes[lanes[i].node].child[lanes[i].lane];
             if (bvhIsLeaf(ref)) {
-                refs[i] = ref;
+                refs[i] = leaves ? leafRun(&ref, 1) : ref;
+            } else if (const uint32_t n = leaves ? leafOnlyChildren(nodes[ref]) : 0; n > 0 && n <= groupLeaves) {
+                refs[i] = leafRun(nodes[ref].child, n);
             } else {
                 refs[i] = (uint32_t)(out.size() - base);
                 out.push_back(emptyWideNode<WideBvhNode8>());

@@ -22,7 +22,14 @@ std::vector<WideBvhNode> collapseBvh(const Bvh& bvh);
 // traversal keeps at most kBvh8StackSize entries. Laid out depth first, the root at 0; empty for count = 0.
 std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count);
 // The same appended to `out`, its references counted from the first node appended.
-void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>& out);
+//
+// With `leaves`, each leaf lane names a run of the four-wide tree's leaves instead, their references appended to
+// `leaves`: bvhLeafFirst is where the run starts there, bvhLeafCount its length (leaves of disjoint, ascending
+// primitive ranges). A run is one leaf, or the leaves of an interior child that is left over when its node's lanes
+// are filled and has only leaf children, at most `groupLeaves` of them: one lane whose leaves a ray tests
+// together, instead of an eight-wide node of its own (a node visit less at the price of a wider leaf test).
+void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>& out,
+              std::vector<uint32_t>* leaves = nullptr, uint32_t groupLeaves = 1);
 
 // The most entries a traversal of this BVH (nodes[0] its root, `count` nodes) keeps on its stack: each interior
 // node on the way down pushes the children it enters but one, so a node needs (children − 1) above what its

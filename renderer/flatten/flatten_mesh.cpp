@@ -317,35 +317,35 @@ TriangleBlock transposeLeaf(const MeshTriangle* triangles, uint32_t first, uint3
             for (int axis = 0; axis < 3; ++axis) block.v[k][axis][lane] = vertex[k][axis];
     }
     block.first = first;
-    block.padding[0] = block.padding[1] = block.padding[2] = 0;
+    block.count = count;
+    block.padding[0] = block.padding[1] = 0;
     return block;
 }
 
 }  // namespace
 
-void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out) {
+void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeaves) {
     static_assert(kBvhMaxLeafSize == 4, "a leaf's triangles fill one four-lane block");
     out.nodes.clear();
     out.blocks.clear();
+    out.leaves.clear();
     size_t leaves = 0;  // the four-wide trees have the same leaves
     for (const WideBvhNode& node : arrays.meshNodes)
         for (uint32_t ref : node.child) leaves += ref != kBvhEmptyLane && bvhIsLeaf(ref);
     out.blocks.reserve(leaves);
+    out.leaves.reserve(leaves);
     out.nodes.reserve(arrays.meshNodes.size());  // an eight-wide tree has fewer nodes than its four-wide one
     for (uint32_t i = 0; i < arrays.meshes.size(); ++i) {
         MeshShape& shape = arrays.meshes[i];
         shape.nodeOffset8 = (uint32_t)out.nodes.size();
-        widenBvh(arrays.meshNodes.data() + shape.nodeOffset, meshNodeCount(arrays, i), out.nodes);
+        // The leaf runs of every mesh in one list, so a run's place in it is its first block's.
+        widenBvh(arrays.meshNodes.data() + shape.nodeOffset, meshNodeCount(arrays, i), out.nodes, &out.leaves,
+                 groupLeaves);
         const MeshTriangle* triangles = arrays.triangles.data() + shape.triangleOffset;
-        for (size_t n = shape.nodeOffset8; n < out.nodes.size(); ++n)
-            for (uint32_t& ref : out.nodes[n].child) {
-                if (ref == kBvhEmptyLane || !bvhIsLeaf(ref)) continue;
-                if (out.blocks.size() >= kBvhMaxFirstPrimitive)
-                    throw std::length_error("widenMeshBvhs: more leaves than a child reference can name");
-                const uint32_t count = bvhLeafCount(ref);
-                out.blocks.push_back(transposeLeaf(triangles, bvhLeafFirst(ref), count));
-                ref = bvhLeafRef((uint32_t)out.blocks.size() - 1, count);
-            }
+        for (size_t leaf = out.blocks.size(); leaf < out.leaves.size(); ++leaf) {
+            const uint32_t ref = out.leaves[leaf];
+            out.blocks.push_back(transposeLeaf(triangles, bvhLeafFirst(ref), bvhLeafCount(ref)));
+        }
     }
 }
 

@@ -36,16 +36,21 @@ uint32_t appendMesh(const MeshData& data, const Affine3& worldFromObject, SceneA
 size_t meshNodeCount(const SceneArrays& arrays, uint32_t shape);
 
 // Every mesh's eight-wide BVH (widenBvh), one after another, for SceneView::meshNodes8, and their leaves'
-// triangles transposed (SceneView::triangleBlocks): each leaf reference of these nodes names its block, not its
-// first triangle. Sets each MeshShape's nodeOffset8. Where the CPU backend's AVX2 or AVX-512 kernels run
-// (backends/cpu/cpu_backend.cpp). `out` is refilled in the memory it holds: fresh memory costs its page faults
-// (50 MB of blocks for a million triangles: ~0.2 s on a VM, build/bench/bvh/bvh_bench), so an edit that moves
-// a mesh reuses the last upload's.
+// triangles transposed (SceneView::triangleBlocks), one block a leaf of the four-wide tree: each leaf reference
+// of these nodes names a run of bvhLeafCount consecutive blocks from bvhLeafFirst, not triangles; a run is one
+// leaf or the leaves of a small subtree (`groupLeaves`, widenBvh). Sets each MeshShape's nodeOffset8. Where the
+// CPU backend's AVX2 or AVX-512 kernels run (backends/cpu/cpu_backend.cpp). `out` is refilled in the memory it
+// holds: fresh memory costs its page faults (50 MB of blocks for a million triangles: ~0.2 s on a VM,
+// build/bench/bvh/bvh_bench), so an edit that moves a mesh reuses the last upload's.
 struct EightWideMeshes {
     std::vector<WideBvhNode8> nodes;
     std::vector<TriangleBlock> blocks;
+    std::vector<uint32_t> leaves;  // the four-wide leaf each block transposes
 };
-void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out);
+// Runs of up to four leaves (any all-leaf four-wide child left over): against runs of one, random rays +20 % on
+// a million triangles (fewer 256-byte nodes fetched), primary +4 %; the bunny (3 674) +1 % (bvh_bench, best of 6).
+constexpr uint32_t kMeshLeafGroup = 4;
+void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeaves = kMeshLeafGroup);
 
 // Points the view's host-only eight-wide arrays at `meshes` (both, or a leaf names a block that is not there).
 inline void viewEightWide(SceneView& view, const EightWideMeshes& meshes) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "support/tessellate.h"
@@ -125,43 +126,55 @@ TEST(AppendMesh, TrianglesGoInBvhLeafOrderAndEachLeafBoundsItsTriangles) {
     }
 }
 
-// widenMeshBvhs: each mesh's eight-wide leaves name a block of their own, in order, that holds exactly the
-// leaf's triangles lane by lane (the rest repeating its first), and together the leaves cover every triangle once.
-TEST(WidenMeshBvhs, EveryLeafNamesABlockOfItsOwnTriangles) {
+// widenMeshBvhs: each mesh's eight-wide leaves name a run of blocks of their own, in order, each block holding
+// exactly one four-wide leaf's triangles lane by lane (the rest repeating its first), and together the leaves
+// cover every triangle once; with runs of up to two leaves some runs hold two.
+TEST(WidenMeshBvhs, EveryLeafNamesBlocksOfItsOwnTriangles) {
     SceneArrays arrays;
     const MeshData soup = indexedMesh(randomTriangleSoup(300, 5));
     appendMesh(prepareMesh(soup, Affine3{}), arrays);
     appendMesh(prepareMesh(indexedMesh(tessellateSphere(Vec3(0), 1.0f, 12, 24)), Affine3{}), arrays);
     appendMesh(prepareMesh(indexedMesh(randomTriangleSoup(3, 9)), makeTranslation(Vec3(5, 0, 0))), arrays);
-    EightWideMeshes wide;
-    wide.blocks.resize(7);  // what a previous upload left is replaced
-    widenMeshBvhs(arrays, wide);
-    std::vector<int> blockUses(wide.blocks.size(), 0);
-    for (uint32_t m = 0; m < arrays.meshes.size(); ++m) {
-        const MeshShape& shape = arrays.meshes[m];
-        const size_t end = m + 1 < arrays.meshes.size() ? arrays.meshes[m + 1].nodeOffset8 : wide.nodes.size();
-        std::vector<int> triangleUses(shape.triangleCount, 0);
-        for (size_t n = shape.nodeOffset8; n < end; ++n)
-            for (int lane = 0; lane < kBvh8Width; ++lane) {
-                const uint32_t ref = wide.nodes[n].child[lane];
-                if (ref == kBvhEmptyLane || !bvhIsLeaf(ref)) continue;
-                ASSERT_LT(bvhLeafFirst(ref), wide.blocks.size());
-                const TriangleBlock& block = wide.blocks[bvhLeafFirst(ref)];
-                ++blockUses[bvhLeafFirst(ref)];
-                const uint32_t count = bvhLeafCount(ref);
-                ASSERT_LE(block.first + count, shape.triangleCount);
-                for (uint32_t k = 0; k < 4; ++k) {
-                    const MeshTriangle& t = arrays.triangles[shape.triangleOffset + block.first + (k < count ? k : 0)];
-                    const Vec3 vertex[3] = {t.p0, t.p1, t.p2};
-                    for (int v = 0; v < 3; ++v)
-                        for (int a = 0; a < 3; ++a) EXPECT_EQ(block.v[v][a][k], vertex[v][a]);
-                    if (k < count) ++triangleUses[block.first + k];
+    for (uint32_t group : {1u, 2u}) {
+        EightWideMeshes wide;
+        wide.blocks.resize(7);  // what a previous upload left is replaced
+        widenMeshBvhs(arrays, wide, group);
+        ASSERT_EQ(wide.leaves.size(), wide.blocks.size());
+        std::vector<int> blockUses(wide.blocks.size(), 0);
+        uint32_t longestRun = 0;
+        for (uint32_t m = 0; m < arrays.meshes.size(); ++m) {
+            const MeshShape& shape = arrays.meshes[m];
+            const size_t end = m + 1 < arrays.meshes.size() ? arrays.meshes[m + 1].nodeOffset8 : wide.nodes.size();
+            std::vector<int> triangleUses(shape.triangleCount, 0);
+            for (size_t n = shape.nodeOffset8; n < end; ++n)
+                for (int lane = 0; lane < kBvh8Width; ++lane) {
+                    const uint32_t ref = wide.nodes[n].child[lane];
+                    if (ref == kBvhEmptyLane || !bvhIsLeaf(ref)) continue;
+                    ASSERT_LE(bvhLeafFirst(ref) + bvhLeafCount(ref), wide.blocks.size());
+                    ASSERT_LE(bvhLeafCount(ref), group);
+                    longestRun = std::max(longestRun, bvhLeafCount(ref));
+                    for (uint32_t b = bvhLeafFirst(ref); b < bvhLeafFirst(ref) + bvhLeafCount(ref); ++b) {
+                        const TriangleBlock& block = wide.blocks[b];
+                        ++blockUses[b];
+                        const uint32_t count = block.count;
+                        ASSERT_GE(count, 1u);
+                        ASSERT_LE(block.first + count, shape.triangleCount);
+                        for (uint32_t k = 0; k < 4; ++k) {
+                            const MeshTriangle& t =
+                                arrays.triangles[shape.triangleOffset + block.first + (k < count ? k : 0)];
+                            const Vec3 vertex[3] = {t.p0, t.p1, t.p2};
+                            for (int v = 0; v < 3; ++v)
+                                for (int a = 0; a < 3; ++a) EXPECT_EQ(block.v[v][a][k], vertex[v][a]);
+                            if (k < count) ++triangleUses[block.first + k];
+                        }
+                    }
                 }
-            }
-        for (uint32_t i = 0; i < shape.triangleCount; ++i)
-            EXPECT_EQ(triangleUses[i], 1) << "mesh " << m << ", triangle " << i;
+            for (uint32_t i = 0; i < shape.triangleCount; ++i)
+                EXPECT_EQ(triangleUses[i], 1) << "mesh " << m << ", triangle " << i << ", runs of " << group;
+        }
+        for (size_t b = 0; b < blockUses.size(); ++b) EXPECT_EQ(blockUses[b], 1) << "block " << b;
+        EXPECT_EQ(longestRun, group);
     }
-    for (size_t b = 0; b < blockUses.size(); ++b) EXPECT_EQ(blockUses[b], 1) << "block " << b;
 }
 
 // The one-step appendMesh (what flatten uses) uploads exactly what prepareMesh then appendMesh does, with

@@ -24,9 +24,10 @@ struct MeshTriangle {
 struct alignas(16) TriangleBlock {
     float v[3][3][4];
     uint32_t first;  // the leaf's first triangle, counted from the mesh's first
-    uint32_t padding[3];
+    uint32_t count;  // its triangles (1–4)
+    uint32_t padding[2];
 };
-static_assert(sizeof(TriangleBlock) == 160, "a block is 144 bytes of vertices and the leaf's first triangle");
+static_assert(sizeof(TriangleBlock) == 160, "144 bytes of vertices, the first triangle and the count");
 
 // Vertex k (0, 1, 2 for p0, p1, p2) of the block's triangle in `lane`.
 inline Vec3 blockVertex(const TriangleBlock& block, int k, uint32_t lane) {

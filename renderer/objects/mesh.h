@@ -59,15 +59,19 @@ TRAZO_HD bool intersectMesh(const SceneView& scene, const MeshShape& mesh, const
     if (scene.meshNodes8.count > 0) {
         // Inlined: in the large tile units GCC would call it out of line from the traversal.
         const TriangleBlock* bestBlock = nullptr;
-        auto blockLeaf = [&](uint32_t block, uint32_t count, float& tNearest) __attribute__((always_inline)) {
-            const TriangleBlock& b = scene.triangleBlocks[block];
-            uint32_t which = 0;
-            if (!intersectTriangleBlock(tr, b, triangles, count, tMin, leafLimit(b.first, tNearest), bestHit, which))
-                return false;
-            tNearest = bestHit.t;
-            best = b.first + which;
-            bestBlock = &b;
-            return true;
+        auto blockLeaf = [&](uint32_t firstBlock, uint32_t blocks, float& tNearest) __attribute__((always_inline)) {
+            bool hit = false;
+            for (const TriangleBlock* b = scene.triangleBlocks.data + firstBlock; blocks > 0; --blocks, ++b) {
+                uint32_t which = 0;
+                if (!intersectTriangleBlock(tr, *b, triangles, b->count, tMin, leafLimit(b->first, tNearest),
+                                            bestHit, which))
+                    continue;
+                tNearest = bestHit.t;
+                best = b->first + which;
+                bestBlock = b;
+                hit = true;
+            }
+            return hit;
         };
         if (!traverseClosest8(scene.meshNodes8.data + mesh.nodeOffset8, ray, tMin, tMax, stack, blockLeaf))
             return false;

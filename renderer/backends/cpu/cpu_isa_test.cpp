@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -151,15 +152,31 @@ bool bruteForceNearest(const SceneArrays& arrays, const Ray& ray, SurfaceHit& ou
 
 // Meshes over eight-wide nodes (the AVX2 and AVX-512 kernels, SceneView::meshNodes8) answer every nearest-hit
 // query as the four-wide ones and as brute force do, ties included: the same t, triangle and barycentrics,
-// bit for bit. Rays: random directions, and rays through the grid's vertices and edge midpoints.
+// bit for bit, with leaves tested one at a time or in runs (widenMeshBvhs' groupLeaves). Rays: random
+// directions, and rays through the grid's vertices and edge midpoints.
 TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
-    SceneArrays arrays = twoMeshes();
-    const SceneView fourWide = hostView(arrays);
-    EightWideMeshes meshes8;
-    widenMeshBvhs(arrays, meshes8);
-    ASSERT_FALSE(meshes8.nodes.empty());
-    SceneView eightWide = hostView(arrays);
-    viewEightWide(eightWide, meshes8);
+    const SceneArrays arrays = twoMeshes();
+    const uint32_t groups[] = {1, 2, 4};
+    static_assert(kMeshLeafGroup == 4, "the renderer's runs are among those tested");
+    constexpr int kTrees = 1 + std::size(groups);
+    SceneArrays widened[std::size(groups)];  // each tree's own nodeOffset8
+    EightWideMeshes meshes8[std::size(groups)];
+    SceneView views[kTrees] = {hostView(arrays)};
+    std::string names[kTrees] = {" four-wide"};
+    for (size_t k = 0; k < std::size(groups); ++k) {
+        widened[k] = arrays;
+        widenMeshBvhs(widened[k], meshes8[k], groups[k]);
+        ASSERT_FALSE(meshes8[k].nodes.empty());
+        views[k + 1] = hostView(widened[k]);
+        viewEightWide(views[k + 1], meshes8[k]);
+        names[k + 1] = " eight-wide, runs of up to " + std::to_string(groups[k]) + " leaves";
+        size_t runBlocks = 0;  // blocks in runs of more than one
+        for (const WideBvhNode8& node : meshes8[k].nodes)
+            for (uint32_t ref : node.child)
+                if (ref != kBvhEmptyLane && bvhIsLeaf(ref) && bvhLeafCount(ref) > 1) runBlocks += bvhLeafCount(ref);
+        if (groups[k] == 1) EXPECT_EQ(runBlocks, 0u);
+        else EXPECT_GT(runBlocks, meshes8[k].blocks.size() / 10) << "runs of " << groups[k];
+    }
 
     CounterUniform u(3);
     const Vec3 origins[] = {{0.3f, 0.2f, 4.0f}, {4.5f, 0.1f, 2.0f}, {-3.0f, 0.5f, -0.5f}, {5.0f, -1.0f, -3.0f}};
@@ -202,13 +219,13 @@ TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
             for (CpuIsa isa : supportedIsas()) {
                 const CameraPacketKernels& kernels = cpuKernelsFor(isa)->cameraPackets();
                 if (!kernels.available) continue;
-                for (const SceneView* view : {&fourWide, static_cast<const SceneView*>(&eightWide)}) {
+                for (int tree = 0; tree < kTrees; ++tree) {
+                    const SceneView* view = &views[tree];
                     RayPacket rays = packet;
                     TracedRay out[kPacketRays];
                     kernels.tracePacket(*view, origin, rays, ~0ull, out);
                     for (int i = 0; i < kPacketRays; ++i) {
-                        const std::string where = std::string(cpuIsaName(isa)) +
-                                                  (view == &fourWide ? " four-wide" : " eight-wide") + ", ray " +
+                        const std::string where = std::string(cpuIsaName(isa)) + names[tree] + ", ray " +
                                                   std::to_string(i) + " of batch " + std::to_string(batch);
                         ASSERT_EQ(out[i].found, found[i]) << where;
                         if (!found[i]) continue;
@@ -218,8 +235,7 @@ TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
                         EXPECT_EQ(out[i].hit.b1, expected[i].b1) << where;
                         EXPECT_EQ(out[i].hit.b2, expected[i].b2) << where;
                     }
-                    const std::string kernel = std::string(cpuIsaName(isa)) +
-                                               (view == &fourWide ? " four-wide" : " eight-wide") + ", batch " +
+                    const std::string kernel = std::string(cpuIsaName(isa)) + names[tree] + ", batch " +
                                                std::to_string(batch);
                     const auto occludedPacket = cpuKernelsFor(isa)->occludedPacket;
                     const uint64_t blocked = occludedPacket ? occludedPacket(*view, origin, shadows, ~0ull) : 0;
