@@ -1,8 +1,7 @@
 // Closest-hit traversal over eight-wide nodes (WideBvhNode8) for host code compiled for AVX2: the slab test of
-// bvh_traverse.h for eight children at once, the same IEEE operations per box, children entered nearest first.
-// Host only: the baseline x86-64 kernels and the device traverse the four-wide nodes (on an H200 these nodes
-// traced 0.80–0.92× as many rays a second: bvh_bench's node-width line). Any-hit queries stay four-wide: over
-// eight-wide nodes shadow rays were 26% slower on the bunny and 5% faster on a 1M-triangle mesh (bvh_bench).
+// bvh_traverse.h for eight children at once, the same IEEE operations per box, children entered nearest first;
+// and any-hit traversal over them. Host only: the baseline x86-64 kernels and the device traverse the four-wide
+// nodes (on an H200 these nodes traced 0.80–0.92× as many rays a second: bvh_bench's node-width line).
 #pragma once
 
 #include "accel/bvh_traverse.h"
@@ -133,6 +132,36 @@ bool traverseClosest8(const WideBvhNode8* nodes, const Ray& ray, float tMin, flo
     bvh_detail::StackEntry entries[kBvh8StackSize];
     ClosestStack stack{entries, kBvh8StackSize, 0};
     return traverseClosest8(nodes, ray, tMin, tMax, stack, leaf);
+}
+
+// traverseAny over eight-wide nodes, with a stack of its own: whether leaf(first, count, tMax) is true for
+// some leaf whose box the ray meets within (tMin, tMax). Children are entered in lane order.
+template <class LeafFn>
+bool traverseAny8(const WideBvhNode8* nodes, const Ray& ray, float tMin, float tMax, LeafFn&& leaf) {
+    const bvh_detail::NodeRay8 nodeRay = bvh_detail::makeNodeRay8(ray);
+    uint32_t entries[kBvh8StackSize];  // not initialised: a stack
+    int size = 0;
+    uint32_t ref = 0;
+    for (;;) {
+        if (!bvhIsLeaf(ref)) {
+            const WideBvhNode8& node = nodes[ref];
+            alignas(32) float tEntry[kBvh8Width];
+            unsigned mask = bvh_detail::intersectChildren8(nodeRay, node, tMin, tMax, tEntry);
+            if (mask) {
+                ref = node.child[__builtin_ctz(mask)];
+                for (mask &= mask - 1; mask; mask &= mask - 1) {
+                    const uint32_t later = node.child[__builtin_ctz(mask)];
+                    bvh_detail::prefetchNode8(nodes, later);
+                    entries[size++] = later;
+                }
+                continue;
+            }
+        } else if (leaf(bvhLeafFirst(ref), bvhLeafCount(ref), tMax)) {
+            return true;
+        }
+        if (size == 0) return false;
+        ref = entries[--size];
+    }
 }
 
 }  // namespace trazo

@@ -324,7 +324,7 @@ TriangleBlock transposeLeaf(const MeshTriangle* triangles, uint32_t first, uint3
 
 }  // namespace
 
-void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeaves) {
+void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeaves, uint32_t anyHit8Triangles) {
     static_assert(kBvhMaxLeafSize == 4, "a leaf's triangles fill one four-lane block");
     out.nodes.clear();
     out.blocks.clear();
@@ -338,6 +338,7 @@ void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeav
     for (uint32_t i = 0; i < arrays.meshes.size(); ++i) {
         MeshShape& shape = arrays.meshes[i];
         shape.nodeOffset8 = (uint32_t)out.nodes.size();
+        shape.anyHit8 = shape.triangleCount >= anyHit8Triangles;
         // The leaf runs of every mesh in one list, so a run's place in it is its first block's.
         widenBvh(arrays.meshNodes.data() + shape.nodeOffset, meshNodeCount(arrays, i), out.nodes, &out.leaves,
                  groupLeaves);

@@ -38,7 +38,8 @@ size_t meshNodeCount(const SceneArrays& arrays, uint32_t shape);
 // Every mesh's eight-wide BVH (widenBvh), one after another, for SceneView::meshNodes8, and their leaves'
 // triangles transposed (SceneView::triangleBlocks), one block a leaf of the four-wide tree: each leaf reference
 // of these nodes names a run of bvhLeafCount consecutive blocks from bvhLeafFirst, not triangles; a run is one
-// leaf or the leaves of a small subtree (`groupLeaves`, widenBvh). Sets each MeshShape's nodeOffset8. Where the
+// leaf or the leaves of a small subtree (`groupLeaves`, widenBvh). Sets each MeshShape's nodeOffset8, and its
+// anyHit8 where it has at least `anyHit8Triangles` triangles. Where the
 // CPU backend's AVX2 or AVX-512 kernels run (backends/cpu/cpu_backend.cpp). `out` is refilled in the memory it
 // holds: fresh memory costs its page faults (50 MB of blocks for a million triangles: ~0.2 s on a VM,
 // build/bench/bvh/bvh_bench), so an edit that moves a mesh reuses the last upload's.
@@ -50,7 +51,13 @@ struct EightWideMeshes {
 // Runs of up to four leaves (any all-leaf four-wide child left over): against runs of one, random rays +20 % on
 // a million triangles (fewer 256-byte nodes fetched), primary +4 %; the bunny (3 674) +1 % (bvh_bench, best of 6).
 constexpr uint32_t kMeshLeafGroup = 4;
-void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeaves = kMeshLeafGroup);
+// Meshes of at least this many triangles take their eight-wide BVH for shadow rays too (MeshShape::anyHit8):
+// once the four-wide tree and its triangles outgrow the caches, fewer and denser nodes pay. Shadow rays over
+// eight-wide against four-wide, bvh_bench's rays (AVX-512, one thread): bunny 0.82×; bumpy spheres of 20k 0.83×,
+// 80k 0.97×, 151k 1.02×, 204k 1.04×, 319k 1.09×, 1M triangles 1.18×.
+constexpr uint32_t kMeshAnyHit8Triangles = 1u << 17;
+void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeaves = kMeshLeafGroup,
+                   uint32_t anyHit8Triangles = kMeshAnyHit8Triangles);
 
 // Points the view's host-only eight-wide arrays at `meshes` (both, or a leaf names a block that is not there).
 inline void viewEightWide(SceneView& view, const EightWideMeshes& meshes) {

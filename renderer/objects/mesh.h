@@ -38,6 +38,7 @@ struct MeshShape {
     uint32_t triangleCount;
     uint32_t hasUvs;          // 0: the OBJ had no uvs; textures are ignored on it
     uint32_t nodeOffset8 = 0;  // root of its eight-wide BVH in SceneView::meshNodes8, where there is one
+    uint32_t anyHit8 = 0;      // 1: shadow rays take the eight-wide BVH too (a large mesh: widenMeshBvhs)
 };
 
 // Nearest triangle of the mesh in (tMin, tMax), of triangles at the same t the first in the mesh's order, so
@@ -100,9 +101,21 @@ TRAZO_HD bool intersectMesh(const SceneView& scene, const MeshShape& mesh, const
     return true;
 }
 
+// Whether some triangle of the mesh lies within (0, tMax): over its eight-wide BVH where it has one and
+// anyHit8 (a large mesh), else over the four-wide one.
 TRAZO_HD_HOST_CALL bool meshBlocks(const SceneView& scene, const MeshShape& mesh, const Ray& ray, float tMax, AnyStack& stack) {
     const TriangleRay tr = makeTriangleRay(ray);
     const MeshTriangle* triangles = scene.triangles.data + mesh.triangleOffset;
+#if TRAZO_HOST_AVX
+    if (mesh.anyHit8 && scene.meshNodes8.count > 0) {
+        auto blockLeaf = [&](uint32_t firstBlock, uint32_t blocks, float tLimit) __attribute__((always_inline)) {
+            for (const TriangleBlock* b = scene.triangleBlocks.data + firstBlock; blocks > 0; --blocks, ++b)
+                if (triangleBlockBlocks(tr, *b, triangles, 0.0f, tLimit)) return true;
+            return false;
+        };
+        return traverseAny8(scene.meshNodes8.data + mesh.nodeOffset8, ray, 0.0f, tMax, blockLeaf);
+    }
+#endif
     auto leaf = [&](uint32_t first, uint32_t count, float tLimit) {
         return triangleLeafBlocks(tr, triangles + first, count, 0.0f, tLimit);
     };

@@ -152,8 +152,9 @@ bool bruteForceNearest(const SceneArrays& arrays, const Ray& ray, SurfaceHit& ou
 
 // Meshes over eight-wide nodes (the AVX2 and AVX-512 kernels, SceneView::meshNodes8) answer every nearest-hit
 // query as the four-wide ones and as brute force do, ties included: the same t, triangle and barycentrics,
-// bit for bit, with leaves tested one at a time or in runs (widenMeshBvhs' groupLeaves). Rays: random
-// directions, and rays through the grid's vertices and edge midpoints.
+// bit for bit, with leaves tested one at a time or in runs (widenMeshBvhs' groupLeaves); shadow queries answer
+// as brute force over the four-wide trees and, where leaves run, over the eight-wide ones (anyHit8). Rays:
+// random directions, and rays through the grid's vertices and edge midpoints.
 TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
     const SceneArrays arrays = twoMeshes();
     const uint32_t groups[] = {1, 2, 4};
@@ -165,11 +166,14 @@ TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
     std::string names[kTrees] = {" four-wide"};
     for (size_t k = 0; k < std::size(groups); ++k) {
         widened[k] = arrays;
-        widenMeshBvhs(widened[k], meshes8[k], groups[k]);
+        const bool anyHit8 = groups[k] > 1;
+        widenMeshBvhs(widened[k], meshes8[k], groups[k], anyHit8 ? 0 : UINT32_MAX);
         ASSERT_FALSE(meshes8[k].nodes.empty());
+        for (const MeshShape& mesh : widened[k].meshes) ASSERT_EQ(mesh.anyHit8, anyHit8 ? 1u : 0u);
         views[k + 1] = hostView(widened[k]);
         viewEightWide(views[k + 1], meshes8[k]);
-        names[k + 1] = " eight-wide, runs of up to " + std::to_string(groups[k]) + " leaves";
+        names[k + 1] = " eight-wide, runs of up to " + std::to_string(groups[k]) + " leaves" +
+                       (anyHit8 ? ", shadow rays eight-wide too" : "");
         size_t runBlocks = 0;  // blocks in runs of more than one
         for (const WideBvhNode8& node : meshes8[k].nodes)
             for (uint32_t ref : node.child)
