@@ -39,10 +39,10 @@ size_t meshNodeCount(const SceneArrays& arrays, uint32_t shape);
 // triangles transposed (SceneView::triangleBlocks), one block a leaf of the four-wide tree: each leaf reference
 // of these nodes names a run of bvhLeafCount consecutive blocks from bvhLeafFirst, not triangles; a run is one
 // leaf or the leaves of a small subtree (`groupLeaves`, widenBvh). Sets each MeshShape's nodeOffset8, and its
-// anyHit8 where it has at least `anyHit8Triangles` triangles. Where the
-// CPU backend's AVX2 or AVX-512 kernels run (backends/cpu/cpu_backend.cpp). `out` is refilled in the memory it
-// holds: fresh memory costs its page faults (50 MB of blocks for a million triangles: ~0.2 s on a VM,
-// build/bench/bvh/bvh_bench), so an edit that moves a mesh reuses the last upload's.
+// anyHit8 where it has at least `anyHit8Triangles` triangles. Where the CPU backend's AVX2 or AVX-512 kernels run
+// (backends/cpu/cpu_backend.cpp). `out` is refilled in the memory it holds: fresh memory costs its page faults
+// (50 MB of blocks for a million triangles: ~0.2 s on a VM, build/bench/bvh/bvh_bench), so an edit that moves
+// a mesh reuses the last upload's.
 struct EightWideMeshes {
     std::vector<WideBvhNode8> nodes;
     std::vector<TriangleBlock> blocks;
