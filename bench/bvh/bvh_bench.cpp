@@ -67,6 +67,10 @@ struct TriangleScene {
             for (size_t i = 0; i < n; ++i) out[done + i] = answers[i].t;
         }
     }
+    // The tree shadow rays take in this mesh (MeshShape::anyHit8), to time the other one: whether
+    // kMeshAnyHit8Triangles still sits where the two trees cross on this machine.
+    bool anyHit8() const { return arrays.meshes[0].anyHit8 != 0; }
+    void setAnyHit8(bool on) { arrays.meshes[0].anyHit8 = on; }  // the view reads the arrays' memory
     static constexpr size_t kChunk = 256;
 };
 
@@ -153,6 +157,7 @@ struct BenchOptions {
     size_t rays = 0;         // 0 = all; else about this many per kind, taken at an even stride
     const char* only = "";   // "" = all kinds, else primary, shadow or random
     const char* scene = "";  // "" = both, else bunny or sphere
+    uint32_t sphereRings = 708;  // the sphere's rings and segments: 2·n·(n − 1) triangles
     int repeat = 1;
     bool build = true;       // time the builds (the 1M-triangle ones take seconds)
 };
@@ -173,7 +178,7 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
     const double build1 = opt.build ? timeBuild(bounds, 1, runs) : 0.0,
                  buildN = opt.build ? timeBuild(bounds, threads, runs) : 0.0;
     const Bvh binary = buildBvh(bounds, triangleBvhOptions());  // the tree appendMesh builds, for its statistics
-    const TriangleScene scene(std::move(triangles));
+    TriangleScene scene(std::move(triangles));
     const std::vector<WideBvhNode>& nodes = scene.arrays.meshNodes;
 
     std::printf("\n== %s: %u triangles ==\n", name, count);
@@ -242,7 +247,13 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
         auto trace = [&](size_t begin, size_t end) {
             scene.answer(&rays[begin], end - begin, k.shadow, &result[begin]);
         };
-        double t1 = 1e30, tN = 1e30;
+        double t1 = 1e30, tN = 1e30, tOther = 1e30;
+        // Shadow rays over the tree the renderer does not take for them, where the mesh has both.
+        const bool otherTree = k.shadow && !scene.meshes8.nodes.empty();
+        std::vector<float> otherResult(otherTree ? rays.size() : 0);
+        auto traceOther = [&](size_t begin, size_t end) {
+            scene.answer(&rays[begin], end - begin, true, &otherResult[begin]);
+        };
 #if TRAZO_HAVE_EMBREE
         double te = 1e30;
         std::vector<float> theirs(rays.size());
@@ -258,6 +269,11 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
 #if TRAZO_HAVE_EMBREE
             te = std::min(te, parallelFor(rays.size(), 1, traceEmbree));
 #endif
+            if (otherTree) {
+                scene.setAnyHit8(!scene.anyHit8());
+                tOther = std::min(tOther, parallelFor(rays.size(), 1, traceOther));
+                scene.setAnyHit8(!scene.anyHit8());
+            }
         }
         for (int r = 0; r < opt.repeat; ++r) tN = std::min(tN, parallelFor(rays.size(), threads, trace));
         size_t hits = 0;
@@ -273,6 +289,14 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
 #else
         std::printf("%-8s %9zu %7.2f%% | %7.2f Mr/s %7.2f Mr/s\n", k.name, rays.size(), 100.0 * hits / rays.size(), mr1, mrN);
 #endif
+        if (otherTree) {
+            const bool eight = scene.anyHit8();
+            const double taken = rays.size() / t1 * 1e-6, other = rays.size() / tOther * 1e-6;
+            std::printf("  shadow rays over the %s-wide tree instead: %.2f Mr/s (%.2fx the %s-wide the renderer takes "
+                        "for %u triangles, kMeshAnyHit8Triangles = %u), %s\n",
+                        eight ? "four" : "eight", other, other / taken, eight ? "eight" : "four", count,
+                        kMeshAnyHit8Triangles, otherResult == result ? "the same answers" : "ANSWERS DIFFER");
+        }
         if (gpu) {
             // Kernel time only (ray upload and answer download excluded); agreement with the CPU's answers.
             std::vector<float> onGpu;
@@ -323,16 +347,22 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--only") && more) opt.only = argv[++i];
         else if (!std::strcmp(argv[i], "--scene") && more) opt.scene = argv[++i];
         else if (!std::strcmp(argv[i], "--repeat") && more) opt.repeat = std::max(1, std::atoi(argv[++i]));
+        else if (!std::strcmp(argv[i], "--sphere-rings") && more) opt.sphereRings = (uint32_t)std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--no-build")) opt.build = false;
         else {
             std::fprintf(stderr,
                          "usage: bvh_bench [--threads N] [--rays N] [--only primary|shadow|random] [--scene bunny|sphere]\n"
-                         "                 [--repeat R] [--no-build]\n"
+                         "                 [--sphere-rings N] [--repeat R] [--no-build]\n"
                          "  --rays N     about N rays per kind (an even stride through the full set)\n"
                          "  --repeat R   best of R timings, Trazo and Embree interleaved\n"
-                         "  --no-build   skip the build timings\n");
+                         "  --no-build   skip the build timings\n"
+                         "  --sphere-rings N  the bumpy sphere's rings and segments, 8..2000 (708: 1,001,112 triangles)\n");
             return 2;
         }
+    }
+    if (opt.sphereRings < 8 || opt.sphereRings > 2000) {
+        std::fprintf(stderr, "bvh_bench: --sphere-rings must be 8..2000, not %u\n", opt.sphereRings);
+        return 2;
     }
     const unsigned threads = opt.threads;
     std::printf("bvh_bench: %u threads (1T = one thread, NT = %u threads); Trazo's CPU kernels: %s\n", threads, threads,
@@ -353,9 +383,12 @@ int main(int argc, char** argv) {
     } else {
         std::printf("\n%s is missing or unreadable: make it with scripts/make_bunny.sh\n", bunnyPath.c_str());
     }
-    // 2·708·707 = 1,001,112 triangles, displaced so the surface is not a plain sphere.
-    if (!*opt.scene || !std::strcmp(opt.scene, "sphere"))
-        benchScene("bumpy sphere (tessellateSphere, 708 rings x 708 segments)",
-                   tessellateSphere({0, 0, 0}, 1.0f, 708, 708, 0.08f), opt);
+    // By default 2·708·707 = 1,001,112 triangles, displaced so the surface is not a plain sphere.
+    if (!*opt.scene || !std::strcmp(opt.scene, "sphere")) {
+        const uint32_t n = opt.sphereRings;
+        const std::string name = "bumpy sphere (tessellateSphere, " + std::to_string(n) + " rings x " +
+                                 std::to_string(n) + " segments)";
+        benchScene(name.c_str(), tessellateSphere({0, 0, 0}, 1.0f, n, n, 0.08f), opt);
+    }
     return 0;
 }

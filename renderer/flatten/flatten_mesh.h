@@ -54,7 +54,8 @@ constexpr uint32_t kMeshLeafGroup = 4;
 // Meshes of at least this many triangles take their eight-wide BVH for shadow rays too (MeshShape::anyHit8):
 // once the four-wide tree and its triangles outgrow the caches, fewer and denser nodes pay. Shadow rays over
 // eight-wide against four-wide, bvh_bench's rays (AVX-512, one thread): bunny 0.82×; bumpy spheres of 20k 0.83×,
-// 80k 0.97×, 151k 1.02×, 204k 1.04×, 319k 1.09×, 1M triangles 1.18×.
+// 80k 0.97×, 151k 1.02×, 204k 1.04×, 319k 1.09×, 1M triangles 1.18× (`bvh_bench --scene sphere --only shadow
+// --sphere-rings N` prints both trees' figures for a mesh of 2·N·(N − 1) triangles).
 constexpr uint32_t kMeshAnyHit8Triangles = 1u << 17;
 void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeaves = kMeshLeafGroup,
                    uint32_t anyHit8Triangles = kMeshAnyHit8Triangles);
