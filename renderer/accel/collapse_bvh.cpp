@@ -1,6 +1,7 @@
 #include "accel/collapse_bvh.h"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 #include <stdexcept>
 
@@ -35,14 +36,51 @@ Aabb laneBox(const WideBvhNode& node, int lane) {
                 Vec3(node.bounds[0][1][lane], node.bounds[1][1][lane], node.bounds[2][1][lane])};
 }
 
-// The number of children of a four-wide node whose children are all leaves (they fill its first lanes), else 0.
-uint32_t leafOnlyChildren(const WideBvhNode& node) {
-    uint32_t n = 0;
-    for (uint32_t ref : node.child) {
-        if (ref == kBvhEmptyLane) break;
-        if (!bvhIsLeaf(ref)) return 0;
-        ++n;
+// Lanes of a four-wide node, bit i for lane i.
+uint32_t usedLaneMask(const WideBvhNode& node) {
+    uint32_t mask = 0;
+    for (int lane = 0; lane < kBvhWidth; ++lane)
+        if (node.child[lane] != kBvhEmptyLane) mask |= 1u << lane;
+    return mask;
+}
+
+// Some lanes of a four-wide node: the binary node they were collapsed from (widenBvh).
+struct LaneGroup {
+    uint32_t node, lanes;
+};
+
+// Whether `opened` describes the node's lanes: lanes 0 .. 2 + steps − 1 used, each step opening a lane that
+// existed then. Otherwise widenBvh takes the node as flat (each lane a child of the binary node).
+bool opensDescribeLanes(const WideBvhNode& node) {
+    const uint32_t used = usedLaneMask(node);
+    const int lanes = std::popcount(used), steps = (int)(node.opened & 3u);
+    if (used != (1u << lanes) - 1 || lanes != 2 + steps) return false;
+    for (int k = 0; k < steps; ++k)
+        if (((node.opened >> (2 + 2 * k)) & 3u) >= (uint32_t)(2 + k)) return false;
+    return true;
+}
+
+// Splits `group` (two or more lanes of `node`) into the groups of the binary node's children, replaying
+// collapseBvh's openings backwards (a lane opened at step k gave its right child to lane 2 + k); for a flat
+// node, into single lanes. Returns the count.
+int splitLanes(const WideBvhNode& node, uint32_t group, uint32_t parts[kBvhWidth]) {
+    if (opensDescribeLanes(node)) {
+        uint32_t member[kBvhWidth] = {1u, 2u, 4u, 8u};  // what each lane's binary node holds, as steps are undone
+        for (int k = (int)(node.opened & 3u) - 1; k >= 0; --k) {
+            const uint32_t lane = (node.opened >> (2 + 2 * k)) & 3u;
+            if ((member[lane] | member[2 + k]) == group) {
+                parts[0] = member[lane], parts[1] = member[2 + k];
+                return 2;
+            }
+            member[lane] |= member[2 + k];
+        }
+        if ((member[0] | member[1]) == group) {
+            parts[0] = member[0], parts[1] = member[1];
+            return 2;
+        }
     }
+    int n = 0;
+    for (uint32_t m = group; m; m &= m - 1) parts[n++] = 1u << std::countr_zero(m);
     return n;
 }
 
@@ -71,16 +109,19 @@ std::vector<WideBvhNode> collapseBvh(const Bvh& bvh) {
         pending.pop_back();
         uint32_t lanes[kBvhWidth] = {in[binary].firstOrChild, in[binary].firstOrChild + 1};
         int count = 2;
+        uint32_t opened = 0;  // WideBvhNode::opened
         while (count < kBvhWidth) {
             int open = -1;
             for (int i = 0; i < count; ++i)
                 if (in[lanes[i]].primCount == 0 && (open < 0 || binaryNodeArea(in[lanes[i]]) > binaryNodeArea(in[lanes[open]])))
                     open = i;
             if (open < 0) break;
+            opened |= (uint32_t)open << (2 + 2 * (count - 2));
             const uint32_t left = in[lanes[open]].firstOrChild;
             lanes[open] = left;
             lanes[count++] = left + 1;
         }
+        out[wide].opened = opened | (uint32_t)(count - 2);
         // Children are pushed in reverse so the first lane's subtree is laid out right after this node.
         uint32_t refs[kBvhWidth];
         for (int i = 0; i < count; ++i) {
@@ -102,74 +143,140 @@ std::vector<WideBvhNode> collapseBvh(const Bvh& bvh) {
 void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>& out, std::vector<uint32_t>* leaves,
               uint32_t groupLeaves) {
     if (count == 0) return;
+    if (leaves && groupLeaves > kBvhMaxLeafRun) throw std::invalid_argument("widenBvh: runs longer than kBvhMaxLeafRun");
     const size_t base = out.size();  // the root; references count from it
-    // A lane of the node being made: a child of some four-wide node (which node, which of its lanes).
-    struct Lane {
-        uint32_t node, lane;
+    // The leaves below each node. Depth first, the root at 0: one backward sweep sees children first.
+    std::vector<uint32_t> leavesBelow(count, 0);
+    for (size_t i = count; i-- > 0;)
+        for (uint32_t ref : nodes[i].child)
+            if (ref != kBvhEmptyLane) leavesBelow[i] += bvhIsLeaf(ref) ? 1 : leavesBelow[ref];
+    // A binary node of the tree the four-wide one was collapsed from is a LaneGroup: some lanes of a four-wide node,
+    // or one lane naming a four-wide node, which stands for all of that node's lanes (read only when needed: on
+    // a large mesh each read of a node is a cache miss).
+    auto isLeaf = [&](LaneGroup g) {
+        return std::popcount(g.lanes) == 1 && bvhIsLeaf(nodes[g.node].child[std::countr_zero(g.lanes)]);
     };
-    auto laneArea = [&](Lane l) { return laneBox(nodes[l.node], (int)l.lane).surfaceArea(); };
-    auto usedLanes = [&](uint32_t node) {
-        uint32_t used = 0;
-        for (uint32_t ref : nodes[node].child) used += ref != kBvhEmptyLane;
-        return used;
+    auto lanesOf = [&](LaneGroup g) {  // the same binary node as lanes of the node whose lanes are its children
+        if (std::popcount(g.lanes) == 1) {
+            const uint32_t ref = nodes[g.node].child[std::countr_zero(g.lanes)];
+            if (!bvhIsLeaf(ref)) return LaneGroup{ref, usedLaneMask(nodes[ref])};
+        }
+        return g;
+    };
+    auto leafCount = [&](LaneGroup g) {
+        uint32_t n = 0;
+        for (uint32_t m = g.lanes; m; m &= m - 1) {
+            const uint32_t ref = nodes[g.node].child[std::countr_zero(m)];
+            n += bvhIsLeaf(ref) ? 1 : leavesBelow[ref];
+        }
+        return n;
+    };
+    // The union of the group's lane boxes (min and max: exact in any order, and no libm calls as in Aabb::grow).
+    // One lane is its binary node's box exactly.
+    auto groupBox = [&](LaneGroup g) {
+        const float(&b)[3][2][kBvhWidth] = nodes[g.node].bounds;
+        Aabb box = laneBox(nodes[g.node], std::countr_zero(g.lanes));
+        for (uint32_t m = g.lanes & (g.lanes - 1); m; m &= m - 1) {
+            const int lane = std::countr_zero(m);
+            for (int axis = 0; axis < 3; ++axis) {
+                box.min[axis] = std::min(box.min[axis], b[axis][0][lane]);
+                box.max[axis] = std::max(box.max[axis], b[axis][1][lane]);
+            }
+        }
+        return box;
+    };
+    // A lane of the eight-wide node being made, and what choosing the lane to open asks of it.
+    struct Lane {
+        LaneGroup group;
+        Aabb box;
+        float area;
+        int parts;  // the lanes its children take (2; a flat node's lanes; 0 for a leaf); a guess until opened
+    };
+    auto makeLane = [&](LaneGroup g) {
+        Lane lane{g, groupBox(g), 0.0f, 0};
+        lane.area = lane.box.surfaceArea();
+        if (std::popcount(g.lanes) > 1) lane.parts = opensDescribeLanes(nodes[g.node]) ? 2 : std::popcount(g.lanes);
+        else if (const uint32_t ref = nodes[g.node].child[std::countr_zero(g.lanes)]; !bvhIsLeaf(ref)) {
+            lane.parts = 2;  // the four-wide node below is not read yet, only fetched
+            __builtin_prefetch(nodes + ref);
+            __builtin_prefetch(reinterpret_cast<const char*>(nodes + ref) + 64);
+        }
+        return lane;
+    };
+    // A run of leaves in `leaves`, in primitive order, as a lane's reference.
+    auto leafRun = [&](LaneGroup g) {
+        uint32_t refs[kBvhMaxLeafRun];
+        uint32_t n = 0;
+        auto collect = [&](uint32_t node, uint32_t lanes, auto&& self) -> void {
+            for (uint32_t m = lanes; m; m &= m - 1) {
+                const uint32_t ref = nodes[node].child[std::countr_zero(m)];
+                if (bvhIsLeaf(ref)) refs[n++] = ref;
+                else self(ref, usedLaneMask(nodes[ref]), self);
+            }
+        };
+        collect(g.node, g.lanes, collect);
+        for (uint32_t i = 1; i < n; ++i)  // insertion sort: a handful
+            for (uint32_t j = i; j > 0 && bvhLeafFirst(refs[j]) < bvhLeafFirst(refs[j - 1]); --j) std::swap(refs[j], refs[j - 1]);
+        if (leaves->size() + n > kBvhMaxFirstPrimitive)
+            throw std::length_error("widenBvh: more leaves than a child reference can name");
+        const uint32_t first = (uint32_t)leaves->size();
+        leaves->insert(leaves->end(), refs, refs + n);
+        return bvhLeafRef(first, n);
     };
     out.reserve(base + count);
     out.push_back(emptyWideNode<WideBvhNode8>());
-    // (four-wide node, the eight-wide node that takes its children), depth first.
-    std::vector<std::pair<uint32_t, uint32_t>> pending{{0u, 0u}};
+    // (binary node, the eight-wide node that takes its children), depth first.
+    std::vector<std::pair<LaneGroup, uint32_t>> pending{{LaneGroup{0u, usedLaneMask(nodes[0])}, 0u}};
     while (!pending.empty()) {
         const auto [seed, made] = pending.back();
         pending.pop_back();
         Lane lanes[kBvh8Width];
         int used = 0;
-        for (uint32_t lane = 0; lane < (uint32_t)kBvhWidth; ++lane)
-            if (nodes[seed].child[lane] != kBvhEmptyLane) lanes[used++] = {seed, lane};
-        for (;;) {
-            int open = -1;
-            float openArea = 0.0f;
-            for (int i = 0; i < used; ++i) {
-                const uint32_t ref = nodes[lanes[i].node].child[lanes[i].lane];
-                if (bvhIsLeaf(ref) || used - 1 + (int)usedLanes(ref) > kBvh8Width) continue;
-                const float area = laneArea(lanes[i]);
-                if (open < 0 || area > openArea) open = i, openArea = area;
-            }
-            if (open < 0) break;
-            const uint32_t opened = nodes[lanes[open].node].child[lanes[open].lane];
-            bool first = true;
-            for (uint32_t lane = 0; lane < (uint32_t)kBvhWidth; ++lane) {
-                if (nodes[opened].child[lane] == kBvhEmptyLane) continue;
-                lanes[first ? open : used++] = {opened, lane};
-                first = false;
-            }
-        }
-        // A run of leaves in `leaves`, as a lane's reference.
-        auto leafRun = [&](const uint32_t* refs, uint32_t n) {
-            if (leaves->size() + n > kBvhMaxFirstPrimitive)
-                throw std::length_error("widenBvh: more leaves than a child reference can name");
-            const uint32_t first = (uint32_t)leaves->size();
-            leaves->insert(leaves->end(), refs, refs + n);
-            return bvhLeafRef(first, n);
+        // Opens binary node g into lanes[i] and new lanes, if its children fit; else returns how many they are.
+        auto open = [&](LaneGroup g, int i) {
+            g = lanesOf(g);
+            uint32_t masks[kBvhWidth] = {};
+            const int parts = splitLanes(nodes[g.node], g.lanes, masks);
+            if (used - 1 + parts > kBvh8Width) return parts;
+            lanes[i] = makeLane(LaneGroup{g.node, masks[0]});
+            for (int k = 1; k < parts; ++k) lanes[used++] = makeLane(LaneGroup{g.node, masks[k]});
+            return 0;
         };
+        if (isLeaf(seed)) {
+            lanes[used++] = makeLane(seed);
+        } else {
+            ++used;
+            open(seed, 0);  // at most four children: they fit
+        }
+        // While lanes are left, open the interior child of largest surface area (the one a ray is most likely to
+        // enter); what is left stays a lane.
+        for (;;) {
+            int widest = -1;
+            for (int i = 0; i < used; ++i)
+                if (lanes[i].parts > 0 && used - 1 + lanes[i].parts <= kBvh8Width &&
+                    (widest < 0 || lanes[i].area > lanes[widest].area))
+                    widest = i;
+            if (widest < 0) break;
+            if (const int parts = open(lanes[widest].group, widest)) lanes[widest].parts = parts;  // guessed wrong
+        }
+        // A leaf left over is a lane; with `leaves`, so is a subtree of at most groupLeaves leaves.
         uint32_t refs[kBvh8Width];
         for (int i = 0; i < used; ++i) {
-            const uint32_t ref = nodes[lanes[i].node].child[lanes[i].lane];
-            if (bvhIsLeaf(ref)) {
-                refs[i] = leaves ? leafRun(&ref, 1) : ref;
-            } else if (const uint32_t n = leaves ? leafOnlyChildren(nodes[ref]) : 0; n > 0 && n <= groupLeaves) {
-                refs[i] = leafRun(nodes[ref].child, n);
+            const LaneGroup g = lanes[i].group;
+            if (isLeaf(g)) {
+                refs[i] = leaves ? leafRun(g) : nodes[g.node].child[std::countr_zero(g.lanes)];
+            } else if (leaves && leafCount(g) <= groupLeaves) {
+                refs[i] = leafRun(g);
             } else {
                 refs[i] = (uint32_t)(out.size() - base);
                 out.push_back(emptyWideNode<WideBvhNode8>());
             }
         }
         WideBvhNode8& node = out[base + made];
-        for (int i = 0; i < used; ++i) {
-            const Aabb box = laneBox(nodes[lanes[i].node], (int)lanes[i].lane);
-            setLane(node, i, box.min, box.max, refs[i]);
-        }
+        for (int i = 0; i < used; ++i) setLane(node, i, lanes[i].box.min, lanes[i].box.max, refs[i]);
         // Children are pushed in reverse so the first lane's subtree is laid out right after this node.
         for (int i = used - 1; i >= 0; --i)
-            if (!bvhIsLeaf(refs[i])) pending.push_back({nodes[lanes[i].node].child[lanes[i].lane], refs[i]});
+            if (!bvhIsLeaf(refs[i])) pending.push_back({lanes[i].group, refs[i]});
     }
 }
 

@@ -15,19 +15,23 @@ namespace trazo {
 // root with one leaf child; an empty one stays empty. Needs leaves of ≤ kBvhMaxLeafSize primitives.
 std::vector<WideBvhNode> collapseBvh(const Bvh& bvh);
 
-// The eight-wide tree of a four-wide one (nodes[0] its root, `count` nodes): each eight-wide node takes a
-// four-wide node's children and, while they fit in eight lanes, opens the interior child of largest surface
-// area into its children. Leaves, their references and the primitive order stay as they are, so a closest-hit
-// query answers the same over either tree; every node is at least as deep in the four-wide tree, so a
-// traversal keeps at most kBvh8StackSize entries. Laid out depth first, the root at 0; empty for count = 0.
+// The eight-wide tree of a four-wide one made by collapseBvh (nodes[0] its root, `count` nodes), as if collapsed
+// from their binary tree: the lanes of each four-wide node are regrouped into the binary nodes they were opened
+// from (WideBvhNode::opened), and each eight-wide node takes a binary node's children and, while they fit in
+// eight lanes, opens the child of largest surface area (fuller nodes, and closer to Embree's trees, than
+// opening whole four-wide nodes: bvh_bench). Leaves, their references and the primitive order stay as they are,
+// so a closest-hit query answers the same over either tree; each node is a binary node, so a traversal keeps at
+// most kBvh8StackSize entries. Laid out depth first, the root at 0; empty for count = 0. A node whose `opened`
+// does not describe it is taken as flat (its lanes the binary node's children).
 std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count);
 // The same appended to `out`, its references counted from the first node appended.
 //
 // With `leaves`, each leaf lane names a run of the four-wide tree's leaves instead, their references appended to
-// `leaves`: bvhLeafFirst is where the run starts there, bvhLeafCount its length (leaves of disjoint, ascending
-// primitive ranges). A run is one leaf, or the leaves of an interior child that is left over when its node's lanes
-// are filled and has only leaf children, at most `groupLeaves` of them: one lane whose leaves a ray tests
-// together, instead of an eight-wide node of its own (a node visit less at the price of a wider leaf test).
+// `leaves` in primitive order: bvhLeafFirst is where the run starts there, bvhLeafCount its length. A run is one
+// leaf, or all the leaves of a subtree of at most `groupLeaves` (≤ kBvhMaxLeafRun) of them, which is never opened:
+// one lane whose leaves a ray tests together, instead of nodes of its own (node visits less at the price of
+// wider leaf tests).
+constexpr uint32_t kBvhMaxLeafRun = 4;  // a run's length fits a reference's count bits
 void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>& out,
               std::vector<uint32_t>* leaves = nullptr, uint32_t groupLeaves = 1);
 

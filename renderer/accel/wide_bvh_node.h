@@ -36,13 +36,18 @@ constexpr int kBvhStackSize = (kBvhWidth - 1) * (int)kMaxBvhDepth;
 struct alignas(128) WideBvhNode {
     float bounds[3][2][kBvhWidth];  // [axis][0 = min, 1 = max][child]
     uint32_t child[kBvhWidth];      // child references (see above)
-    uint32_t padding[kBvhWidth];    // to 128 bytes: a node is two whole cache lines
+    // The binary nodes the lanes were opened from (collapseBvh), so widenBvh can regroup them as the binary tree
+    // did: bits 0–1 how many lanes were opened after the first two, then two bits each for the lane opened at
+    // each step (its left child stayed in it, its right child took the next lane). Traversal never reads it.
+    uint32_t opened;
+    uint32_t padding[kBvhWidth - 1];  // to 128 bytes: a node is two whole cache lines
 };
 static_assert(sizeof(WideBvhNode) == 128, "a node should fill exactly two 64-byte cache lines");
 
 // The node the host's AVX2 and AVX-512 kernels traverse meshes over: the same layout with eight lanes (one
 // 256-bit slab test per axis and plane), made from the four-wide nodes where those kernels run (widenBvh,
-// accel/collapse_bvh.h); never on the device. Its tree is no deeper than the four-wide one it is made from.
+// accel/collapse_bvh.h); never on the device. Each is a node of the binary tree both are made from, so its tree
+// is no deeper than that one (≤ kMaxBvhDepth).
 constexpr int kBvh8Width = 8;
 constexpr int kBvh8StackSize = (kBvh8Width - 1) * (int)kMaxBvhDepth;
 
