@@ -53,10 +53,10 @@ struct EightWideMeshes {
 constexpr uint32_t kMeshLeafGroup = 4;
 // Meshes of at least this many triangles take their eight-wide BVH for shadow rays too (MeshShape::anyHit8):
 // once the four-wide tree and its triangles outgrow the caches, fewer and denser nodes pay. Shadow rays over
-// eight-wide against four-wide, bvh_bench's rays (AVX-512, one thread): bunny 0.82×; bumpy spheres of 20k 0.83×,
-// 80k 0.97×, 151k 1.02×, 204k 1.04×, 319k 1.09×, 1M triangles 1.18× (`bvh_bench --scene sphere --only shadow
+// eight-wide against four-wide, bvh_bench's rays (AVX-512, one thread, best of 8): bunny 0.79×; bumpy spheres of
+// 29k triangles 0.95×, 64k 1.00×, 131k 1.14×, 319k 1.19×, 1M 1.27× (`bvh_bench --scene sphere --only shadow
 // --sphere-rings N` prints both trees' figures for a mesh of 2·N·(N − 1) triangles).
-constexpr uint32_t kMeshAnyHit8Triangles = 1u << 17;
+constexpr uint32_t kMeshAnyHit8Triangles = 1u << 16;
 void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeaves = kMeshLeafGroup,
                    uint32_t anyHit8Triangles = kMeshAnyHit8Triangles);
 
