@@ -356,7 +356,8 @@ int main(int argc, char** argv) {
                          "  --rays N     about N rays per kind (an even stride through the full set)\n"
                          "  --repeat R   best of R timings, Trazo and Embree interleaved\n"
                          "  --no-build   skip the build timings\n"
-                         "  --sphere-rings N  the bumpy sphere's rings and segments, 8..2000 (708: 1,001,112 triangles)\n");
+                         "  --sphere-rings N  the bumpy sphere's rings and segments, 8..2000\n"
+                         "                    (708: 1,001,112 triangles)\n");
             return 2;
         }
     }

@@ -296,7 +296,8 @@ EightWide widenBinary(const Bvh& bvh, bool runs, uint32_t group) {
         for (;;) {
             int widest = -1;
             for (int i = 0; i < (int)lanes.size(); ++i)
-                if (!isLeaf(lanes[i]) && lanes.size() < (size_t)kBvh8Width && (widest < 0 || area(lanes[i]) > area(lanes[widest])))
+                if (!isLeaf(lanes[i]) && lanes.size() < (size_t)kBvh8Width &&
+                    (widest < 0 || area(lanes[i]) > area(lanes[widest])))
                     widest = i;
             if (widest < 0) break;
             const uint32_t left = in[lanes[widest]].firstOrChild;
@@ -347,11 +348,13 @@ TEST(WidenBvh, IsTheEightWideTreeOfTheBinaryTree) {
             EXPECT_EQ(made.leaves, expected.leaves);
             for (size_t n = 0; n < made.nodes.size(); ++n)
                 for (int lane = 0; lane < kBvh8Width; ++lane) {
-                    ASSERT_EQ(made.nodes[n].child[lane], expected.nodes[n].child[lane]) << "node " << n << " lane " << lane;
+                    ASSERT_EQ(made.nodes[n].child[lane], expected.nodes[n].child[lane])
+                        << "node " << n << " lane " << lane;
                     if (expected.nodes[n].child[lane] == kBvhEmptyLane) continue;
                     for (int axis = 0; axis < 3; ++axis)
                         for (int side = 0; side < 2; ++side)
-                            ASSERT_EQ(made.nodes[n].bounds[axis][side][lane], expected.nodes[n].bounds[axis][side][lane]);
+                            ASSERT_EQ(made.nodes[n].bounds[axis][side][lane],
+                                      expected.nodes[n].bounds[axis][side][lane]);
                 }
         }
     }

@@ -143,7 +143,8 @@ std::vector<WideBvhNode> collapseBvh(const Bvh& bvh) {
 void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>& out, std::vector<uint32_t>* leaves,
               uint32_t groupLeaves) {
     if (count == 0) return;
-    if (leaves && groupLeaves > kBvhMaxLeafRun) throw std::invalid_argument("widenBvh: runs longer than kBvhMaxLeafRun");
+    if (leaves && groupLeaves > kBvhMaxLeafRun)
+        throw std::invalid_argument("widenBvh: runs longer than kBvhMaxLeafRun");
     const size_t base = out.size();  // the root; references count from it
     // The leaves below each node. Depth first, the root at 0: one backward sweep sees children first.
     std::vector<uint32_t> leavesBelow(count, 0);
@@ -216,7 +217,8 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
         };
         collect(g.node, g.lanes, collect);
         for (uint32_t i = 1; i < n; ++i)  // insertion sort: a handful
-            for (uint32_t j = i; j > 0 && bvhLeafFirst(refs[j]) < bvhLeafFirst(refs[j - 1]); --j) std::swap(refs[j], refs[j - 1]);
+            for (uint32_t j = i; j > 0 && bvhLeafFirst(refs[j]) < bvhLeafFirst(refs[j - 1]); --j)
+                std::swap(refs[j], refs[j - 1]);
         if (leaves->size() + n > kBvhMaxFirstPrimitive)
             throw std::length_error("widenBvh: more leaves than a child reference can name");
         const uint32_t first = (uint32_t)leaves->size();
