@@ -80,6 +80,35 @@ std::vector<Aabb> boundsOf(const std::vector<Vec3>& tris) {
     return b;
 }
 
+// A ray's expected eight-wide node visits and leaf-block tests, given that it meets the root's box: Σ area over
+// the root's area, counted as Embree's statistics count them (--tree-stats), so the trees compare.
+struct TreeCost {
+    double nodes = 0.0, blocks = 0.0;
+};
+TreeCost treeCost(const std::vector<WideBvhNode8>& nodes) {
+    TreeCost cost;
+    if (nodes.empty()) return cost;
+    auto laneBox = [](const WideBvhNode8& n, int lane) {
+        return Aabb{Vec3(n.bounds[0][0][lane], n.bounds[1][0][lane], n.bounds[2][0][lane]),
+                    Vec3(n.bounds[0][1][lane], n.bounds[1][1][lane], n.bounds[2][1][lane])};
+    };
+    auto nodeBox = [&](const WideBvhNode8& n) {
+        Aabb box;
+        for (int lane = 0; lane < kBvh8Width; ++lane)
+            if (n.child[lane] != kBvhEmptyLane) box.grow(laneBox(n, lane));
+        return box;
+    };
+    const double rootArea = nodeBox(nodes[0]).surfaceArea();
+    if (rootArea <= 0.0) return cost;
+    for (const WideBvhNode8& n : nodes) {  // one mesh's tree: every node is reached once
+        cost.nodes += nodeBox(n).surfaceArea() / rootArea;
+        for (int lane = 0; lane < kBvh8Width; ++lane)
+            if (n.child[lane] != kBvhEmptyLane && bvhIsLeaf(n.child[lane]))
+                cost.blocks += laneBox(n, lane).surfaceArea() / rootArea * bvhLeafCount(n.child[lane]);
+    }
+    return cost;
+}
+
 // Best of `runs` builds (binary SAH build, then the collapse to wide nodes), in seconds.
 double timeBuild(const std::vector<Aabb>& bounds, unsigned threads, int runs) {
     double best = 1e30;
@@ -160,6 +189,7 @@ struct BenchOptions {
     uint32_t sphereRings = 708;  // the sphere's rings and segments: 2·n·(n − 1) triangles
     int repeat = 1;
     bool build = true;       // time the builds (the 1M-triangle ones take seconds)
+    bool treeStats = false;  // Embree prints its BVH's statistics (and device banner) as it builds
 };
 
 std::vector<RayQuery> subsample(const std::vector<RayQuery>& all, size_t count) {
@@ -205,6 +235,10 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
                     m.nodes.size(), m.blocks.size(), cpuIsaName(selectCpuKernels().isa),
                     m.nodes.size() * sizeof(WideBvhNode8) * 1e-6, m.blocks.size() * sizeof(TriangleBlock) * 1e-6,
                     fresh * 1e3, again * 1e3);
+        const TreeCost cost = treeCost(m.nodes);
+        std::printf("   a ray meeting its box visits %.2f nodes and tests %.2f leaf blocks (expected: area over the "
+                    "root's)\n",
+                    cost.nodes, cost.blocks);
     }
 
     // The GPU, when there is one: the same scene and queries through the CUDA backend.
@@ -231,7 +265,7 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
     } kinds[] = {{"primary", &sets.primary, false}, {"shadow", &sets.shadow, true}, {"random", &sets.random, false}};
 
 #if TRAZO_HAVE_EMBREE
-    const bench::EmbreeScene embree1(scene.triangles, 1);
+    const bench::EmbreeScene embree1(scene.triangles, 1, opt.treeStats);
     const bench::EmbreeScene embreeN(scene.triangles, 0);
     std::printf("Embree build (default quality): %.1f ms (1 thread), %.1f ms (all threads)\n",
                 embree1.buildSeconds() * 1e3, embreeN.buildSeconds() * 1e3);
@@ -349,15 +383,18 @@ int main(int argc, char** argv) {
         else if (!std::strcmp(argv[i], "--repeat") && more) opt.repeat = std::max(1, std::atoi(argv[++i]));
         else if (!std::strcmp(argv[i], "--sphere-rings") && more) opt.sphereRings = (uint32_t)std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--no-build")) opt.build = false;
+        else if (!std::strcmp(argv[i], "--tree-stats")) opt.treeStats = true;
         else {
             std::fprintf(stderr,
                          "usage: bvh_bench [--threads N] [--rays N] [--only primary|shadow|random] [--scene bunny|sphere]\n"
-                         "                 [--sphere-rings N] [--repeat R] [--no-build]\n"
+                         "                 [--sphere-rings N] [--repeat R] [--no-build] [--tree-stats]\n"
                          "  --rays N     about N rays per kind (an even stride through the full set)\n"
                          "  --repeat R   best of R timings, Trazo and Embree interleaved\n"
                          "  --no-build   skip the build timings\n"
                          "  --sphere-rings N  the bumpy sphere's rings and segments, 8..2000\n"
-                         "                    (708: 1,001,112 triangles)\n");
+                         "                    (708: 1,001,112 triangles)\n"
+                         "  --tree-stats Embree prints its BVH's statistics as it builds, to compare with Trazo's\n"
+                         "               expected node visits and leaf-block tests\n");
             return 2;
         }
     }

@@ -14,8 +14,10 @@ struct EmbreeScene::Impl {
     RTCScene scene = nullptr;
 };
 
-EmbreeScene::EmbreeScene(const std::vector<Vec3>& triangles, unsigned threads) : impl_(new Impl) {
-    const std::string config = threads ? "threads=" + std::to_string(threads) : "";
+EmbreeScene::EmbreeScene(const std::vector<Vec3>& triangles, unsigned threads, bool printStatistics)
+    : impl_(new Impl) {
+    std::string config = threads ? "threads=" + std::to_string(threads) : "";
+    if (printStatistics) config += config.empty() ? "verbose=2" : ",verbose=2";
     impl_->device = rtcNewDevice(config.c_str());
     const auto start = std::chrono::steady_clock::now();
     impl_->scene = rtcNewScene(impl_->device);
