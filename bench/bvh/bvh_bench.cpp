@@ -88,20 +88,10 @@ struct TreeCost {
 TreeCost treeCost(const std::vector<WideBvhNode8>& nodes) {
     TreeCost cost;
     if (nodes.empty()) return cost;
-    auto laneBox = [](const WideBvhNode8& n, int lane) {
-        return Aabb{Vec3(n.bounds[0][0][lane], n.bounds[1][0][lane], n.bounds[2][0][lane]),
-                    Vec3(n.bounds[0][1][lane], n.bounds[1][1][lane], n.bounds[2][1][lane])};
-    };
-    auto nodeBox = [&](const WideBvhNode8& n) {
-        Aabb box;
-        for (int lane = 0; lane < kBvh8Width; ++lane)
-            if (n.child[lane] != kBvhEmptyLane) box.grow(laneBox(n, lane));
-        return box;
-    };
-    const double rootArea = nodeBox(nodes[0]).surfaceArea();
+    const double rootArea = usedLanesBounds(nodes[0]).surfaceArea();
     if (rootArea <= 0.0) return cost;
     for (const WideBvhNode8& n : nodes) {  // one mesh's tree: every node is reached once
-        cost.nodes += nodeBox(n).surfaceArea() / rootArea;
+        cost.nodes += usedLanesBounds(n).surfaceArea() / rootArea;
         for (int lane = 0; lane < kBvh8Width; ++lane)
             if (n.child[lane] != kBvhEmptyLane && bvhIsLeaf(n.child[lane]))
                 cost.blocks += laneBox(n, lane).surfaceArea() / rootArea * bvhLeafCount(n.child[lane]);

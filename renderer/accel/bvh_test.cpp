@@ -169,9 +169,7 @@ uint32_t expectValidWideStructure(const Bvh& bvh, const std::vector<Node>& nodes
                 continue;
             }
             EXPECT_EQ(used++, lane) << "used lanes come first";
-            Aabb box;
-            box.min = Vec3(node.bounds[0][0][lane], node.bounds[1][0][lane], node.bounds[2][0][lane]);
-            box.max = Vec3(node.bounds[0][1][lane], node.bounds[1][1][lane], node.bounds[2][1][lane]);
+            const Aabb box = laneBox(node, lane);
             std::vector<uint32_t> below;
             primitivesBelow(ref, primitivesBelow, below);
             for (uint32_t i : below) EXPECT_TRUE(box.contains(bounds[bvh.primitiveOrder[i]]));

@@ -30,12 +30,6 @@ Node emptyWideNode() {
     return node;
 }
 
-// The box of a four-wide node's child `lane`.
-Aabb laneBox(const WideBvhNode& node, int lane) {
-    return Aabb{Vec3(node.bounds[0][0][lane], node.bounds[1][0][lane], node.bounds[2][0][lane]),
-                Vec3(node.bounds[0][1][lane], node.bounds[1][1][lane], node.bounds[2][1][lane])};
-}
-
 // Lanes of a four-wide node, bit i for lane i.
 uint32_t usedLaneMask(const WideBvhNode& node) {
     uint32_t mask = 0;
@@ -288,16 +282,7 @@ std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count) {
     return out;
 }
 
-Aabb wideNodeBounds(const WideBvhNode& node) {
-    Aabb b;
-    for (int lane = 0; lane < kBvhWidth; ++lane) {
-        if (node.child[lane] == kBvhEmptyLane) continue;
-        const Aabb box = laneBox(node, lane);
-        b.grow(box.min);
-        b.grow(box.max);
-    }
-    return b;
-}
+Aabb wideNodeBounds(const WideBvhNode& node) { return usedLanesBounds(node); }
 
 uint32_t wideBvhStackNeed(const WideBvhNode* nodes, size_t count) {
     // Depth first, the root at 0: every child follows its parent, so one backward sweep sees children first.

@@ -9,6 +9,22 @@
 
 namespace trazo {
 
+// The box of a wide node's child in `lane`, four- or eight-wide.
+template <class Node>
+Aabb laneBox(const Node& node, int lane) {
+    return Aabb{Vec3(node.bounds[0][0][lane], node.bounds[1][0][lane], node.bounds[2][0][lane]),
+                Vec3(node.bounds[0][1][lane], node.bounds[1][1][lane], node.bounds[2][1][lane])};
+}
+
+// The union of the boxes of a wide node's used lanes (for a root: the whole tree's bounds).
+template <class Node>
+Aabb usedLanesBounds(const Node& node) {
+    Aabb b;
+    for (int lane = 0; lane < int(sizeof(node.child) / sizeof(node.child[0])); ++lane)
+        if (node.child[lane] != kBvhEmptyLane) b.grow(laneBox(node, lane));
+    return b;
+}
+
 // Each wide node takes the children of a binary node and, while it has fewer than four, opens its interior
 // child of largest surface area (the one a ray is most likely to enter). Leaves and the primitive order stay
 // as they are. Nodes are laid out depth first, the root at 0. A binary BVH that is a single leaf becomes a

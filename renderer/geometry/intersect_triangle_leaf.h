@@ -49,6 +49,15 @@ TRAZO_HD bool intersectTrianglesLoop(const TriangleRay& r, const MeshTriangle* t
     return any;
 }
 
+// Whether any of triangles[0, count) is hit within (tMin, tMax): the first hit ends the loop.
+TRAZO_HD bool anyTriangleHit(const TriangleRay& r, const MeshTriangle* triangles, uint32_t count, float tMin,
+                             float tMax) {
+    TriangleHit hit;
+    for (uint32_t i = 0; i < count; ++i)
+        if (intersectTriangle(r, triangles[i].p0, triangles[i].p1, triangles[i].p2, tMin, tMax, hit)) return true;
+    return false;
+}
+
 #if TRAZO_HOST_SSE
 namespace triangle_detail {
 
@@ -198,9 +207,7 @@ inline bool triangleBlockBlocks(const TriangleRay& r, const TriangleBlock& block
     __m128 t, invDet, v, w;
     const int mask = intersect4(r, AnyHitBlock{block}, tMin, tMax, t, invDet, v, w);
     if (mask >= 0) return (mask & ((1 << block.count) - 1)) != 0;
-    TriangleHit hit;
-    uint32_t which = 0;
-    return intersectTrianglesLoop(r, triangles + block.first, block.count, tMin, tMax, hit, which);
+    return anyTriangleHit(r, triangles + block.first, block.count, tMin, tMax);
 }
 #endif
 
@@ -213,10 +220,7 @@ TRAZO_HD bool triangleLeafBlocks(const TriangleRay& r, const MeshTriangle* trian
     const int mask = intersect4(r, TriangleSpan{triangles, count}, tMin, tMax, t, invDet, v, w);
     if (mask >= 0) return (mask & ((1 << count) - 1)) != 0;
 #endif
-    TriangleHit hit;
-    for (uint32_t i = 0; i < count; ++i)
-        if (intersectTriangle(r, triangles[i].p0, triangles[i].p1, triangles[i].p2, tMin, tMax, hit)) return true;
-    return false;
+    return anyTriangleHit(r, triangles, count, tMin, tMax);
 }
 
 }  // namespace trazo
