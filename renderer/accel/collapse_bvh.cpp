@@ -30,14 +30,6 @@ Node emptyWideNode() {
     return node;
 }
 
-// Lanes of a four-wide node, bit i for lane i.
-uint32_t usedLaneMask(const WideBvhNode& node) {
-    uint32_t mask = 0;
-    for (int lane = 0; lane < kBvhWidth; ++lane)
-        if (node.child[lane] != kBvhEmptyLane) mask |= 1u << lane;
-    return mask;
-}
-
 // Some lanes of a four-wide node: the binary node they were collapsed from (widenBvh).
 struct LaneGroup {
     uint32_t node, lanes;
@@ -166,20 +158,6 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
         }
         return n;
     };
-    // The union of the group's lane boxes (min and max: exact in any order, and no libm calls as in Aabb::grow).
-    // One lane is its binary node's box exactly.
-    auto groupBox = [&](LaneGroup g) {
-        const float(&b)[3][2][kBvhWidth] = nodes[g.node].bounds;
-        Aabb box = laneBox(nodes[g.node], std::countr_zero(g.lanes));
-        for (uint32_t m = g.lanes & (g.lanes - 1); m; m &= m - 1) {
-            const int lane = std::countr_zero(m);
-            for (int axis = 0; axis < 3; ++axis) {
-                box.min[axis] = std::min(box.min[axis], b[axis][0][lane]);
-                box.max[axis] = std::max(box.max[axis], b[axis][1][lane]);
-            }
-        }
-        return box;
-    };
     // A lane of the eight-wide node being made, and what choosing the lane to open asks of it.
     struct Lane {
         LaneGroup group;
@@ -188,7 +166,7 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
         int parts;  // the lanes its children take (2; a flat node's lanes; 0 for a leaf); a guess until opened
     };
     auto makeLane = [&](LaneGroup g) {
-        Lane lane{g, groupBox(g), 0.0f, 0};
+        Lane lane{g, lanesBounds(nodes[g.node], g.lanes), 0.0f, 0};  // one lane: its binary node's box
         lane.area = lane.box.surfaceArea();
         if (std::popcount(g.lanes) > 1) lane.parts = opensDescribeLanes(nodes[g.node]) ? 2 : std::popcount(g.lanes);
         else if (const uint32_t ref = nodes[g.node].child[std::countr_zero(g.lanes)]; !bvhIsLeaf(ref)) {

@@ -1,6 +1,9 @@
 // Collapsing a binary BVH into the four-wide nodes the kernels traverse (host).
 #pragma once
 
+#include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <vector>
 
 #include "core/aabb.h"
@@ -16,13 +19,35 @@ Aabb laneBox(const Node& node, int lane) {
                 Vec3(node.bounds[0][1][lane], node.bounds[1][1][lane], node.bounds[2][1][lane])};
 }
 
+// The used lanes of a wide node, bit i for lane i.
+template <class Node>
+uint32_t usedLaneMask(const Node& node) {
+    uint32_t mask = 0;
+    for (int lane = 0; lane < int(sizeof(node.child) / sizeof(node.child[0])); ++lane)
+        if (node.child[lane] != kBvhEmptyLane) mask |= 1u << lane;
+    return mask;
+}
+
+// The union of the boxes of the node's lanes in `lanes` (bit i for lane i; empty for none). Plain min and max,
+// exact in any order, where Aabb::grow would call libm's fminf and fmaxf.
+template <class Node>
+Aabb lanesBounds(const Node& node, uint32_t lanes) {
+    if (lanes == 0) return Aabb{};
+    Aabb box = laneBox(node, std::countr_zero(lanes));
+    for (uint32_t m = lanes & (lanes - 1); m; m &= m - 1) {
+        const int lane = std::countr_zero(m);
+        for (int axis = 0; axis < 3; ++axis) {
+            box.min[axis] = std::min(box.min[axis], node.bounds[axis][0][lane]);
+            box.max[axis] = std::max(box.max[axis], node.bounds[axis][1][lane]);
+        }
+    }
+    return box;
+}
+
 // The union of the boxes of a wide node's used lanes (for a root: the whole tree's bounds).
 template <class Node>
 Aabb usedLanesBounds(const Node& node) {
-    Aabb b;
-    for (int lane = 0; lane < int(sizeof(node.child) / sizeof(node.child[0])); ++lane)
-        if (node.child[lane] != kBvhEmptyLane) b.grow(laneBox(node, lane));
-    return b;
+    return lanesBounds(node, usedLaneMask(node));
 }
 
 // Each wide node takes the children of a binary node and, while it has fewer than four, opens its interior

@@ -36,17 +36,17 @@ uint32_t appendMesh(const MeshData& data, const Affine3& worldFromObject, SceneA
 size_t meshNodeCount(const SceneArrays& arrays, uint32_t shape);
 
 // Every mesh's eight-wide BVH (widenBvh), one after another, for SceneView::meshNodes8, and their leaves'
-// triangles transposed (SceneView::triangleBlocks), one block a leaf of the four-wide tree: each leaf reference
-// of these nodes names a run of bvhLeafCount consecutive blocks from bvhLeafFirst, not triangles; a run is one
-// leaf or the leaves of a small subtree left over when a node's lanes are full (`groupLeaves`, widenBvh). Sets
-// each MeshShape's nodeOffset8, and its anyHit8 where it has at least `anyHit8Triangles` triangles. Where the CPU
-// backend's AVX2 or AVX-512 kernels run (backends/cpu/cpu_backend.cpp). `out` is refilled in the memory it holds:
-// fresh memory costs its page faults (50 MB of blocks for a million triangles: ~0.2 s on a VM,
-// build/bench/bvh/bvh_bench), so an edit that moves a mesh reuses the last upload's.
+// triangles transposed (SceneView::triangleBlocks): each leaf reference of these nodes names bvhLeafCount
+// consecutive blocks from bvhLeafFirst, not triangles. A leaf lane is one four-wide leaf or the leaves of a small
+// subtree left over when a node's lanes are full (`groupLeaves`, widenBvh); its triangles are consecutive and fill
+// its blocks four at a time, all full but the last. Sets each MeshShape's nodeOffset8, and its anyHit8 where it
+// has at least `anyHit8Triangles` triangles. Where the CPU backend's AVX2 or AVX-512 kernels run
+// (backends/cpu/cpu_backend.cpp). `out` is refilled in the memory it holds: fresh memory costs its page faults
+// (50 MB of blocks for a million triangles: ~0.2 s on a VM, build/bench/bvh/bvh_bench), so an edit that moves a
+// mesh reuses the last upload's.
 struct EightWideMeshes {
     std::vector<WideBvhNode8> nodes;
     std::vector<TriangleBlock> blocks;
-    std::vector<uint32_t> leaves;  // the four-wide leaf each block transposes
 };
 // Runs of up to four leaves, against runs of one (fewer 256-byte nodes fetched; bvh_bench, one thread, best of 2–3
 // interleaved): a million triangles primary +8 %, shadow +7 %, random +10 %; the bunny primary +5 %, random +4 %.

@@ -17,13 +17,13 @@ struct MeshTriangle {
     Vec3 p0, p1, p2;
 };
 
-// A leaf's triangles transposed for four-lane tests: v[k][axis][lane] is vertex k of triangle first + lane
-// (lanes past the leaf's count repeat its first triangle). Host only: where the CPU backend traverses meshes
+// Up to four consecutive triangles of a mesh transposed for four-lane tests: v[k][axis][lane] is vertex k of
+// triangle first + lane (lanes past count repeat the first). Host only: where the CPU backend traverses meshes
 // over eight-wide nodes, their leaves refer to these (flatten/flatten_mesh.h, widenMeshBvhs), so a leaf test
 // loads its vertices as they are used instead of gathering and transposing four 36-byte triangles.
 struct alignas(16) TriangleBlock {
     float v[3][3][4];
-    uint32_t first;  // the leaf's first triangle, counted from the mesh's first
+    uint32_t first;  // the first triangle, counted from the mesh's first
     uint32_t count;  // its triangles (1–4)
     uint32_t padding[2];
 };
@@ -189,8 +189,7 @@ TRAZO_HD bool intersectTriangleLeaf(const TriangleRay& r, const MeshTriangle* tr
 }
 
 #if TRAZO_HOST_SSE
-// intersectTriangleLeaf over a leaf's block (its triangles: the mesh's triangles from block.first), the same
-// answer bit for bit.
+// intersectTriangleLeaf over a block's triangles (the mesh's from block.first), the same answer bit for bit.
 inline bool intersectTriangleBlock(const TriangleRay& r, const TriangleBlock& block, const MeshTriangle* triangles,
                                    uint32_t count, float tMin, float tMax, TriangleHit& hit, uint32_t& which) {
     using namespace triangle_detail;
@@ -200,7 +199,7 @@ inline bool intersectTriangleBlock(const TriangleRay& r, const TriangleBlock& bl
     return nearestLane(mask & ((1 << count) - 1), t, invDet, v, w, hit, which);
 }
 
-// Whether any of the block's triangles is hit within (tMin, tMax): triangleLeafBlocks over its leaf.
+// Whether any of the block's triangles is hit within (tMin, tMax): triangleLeafBlocks over them.
 inline bool triangleBlockBlocks(const TriangleRay& r, const TriangleBlock& block, const MeshTriangle* triangles,
                                 float tMin, float tMax) {
     using namespace triangle_detail;
