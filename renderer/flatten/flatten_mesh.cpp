@@ -364,7 +364,8 @@ void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeav
         // Blocks in the order of the nodes that name them: a node's runs lie side by side.
         for (size_t n = shape.nodeOffset8; n < out.nodes.size(); ++n)
             for (uint32_t& ref : out.nodes[n].child)
-                if (ref != kBvhEmptyLane && bvhIsLeaf(ref)) ref = appendRunBlocks(ref, runLeaves, triangles, out.blocks);
+                if (ref != kBvhEmptyLane && bvhIsLeaf(ref))
+                    ref = appendRunBlocks(ref, runLeaves, triangles, out.blocks);
     }
 }
 
