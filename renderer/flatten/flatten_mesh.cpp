@@ -347,7 +347,7 @@ void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeav
     static_assert(kBvhMaxLeafSize == 4, "a leaf's triangles fit one four-lane block");
     out.nodes.clear();
     out.blocks.clear();
-    size_t leaves = 0;  // the four-wide trees have the same leaves, at most as many as the blocks
+    size_t leaves = 0;  // the four-wide trees' leaves: at least as many as the blocks they pack into
     for (const WideBvhNode& node : arrays.meshNodes)
         for (uint32_t ref : node.child) leaves += ref != kBvhEmptyLane && bvhIsLeaf(ref);
     out.blocks.reserve(leaves);
