@@ -166,7 +166,7 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
         int parts;  // the lanes its children take (2; a flat node's lanes; 0 for a leaf); a guess until opened
     };
     auto makeLane = [&](LaneGroup g) {
-        Lane lane{g, lanesBounds(nodes[g.node], g.lanes), 0.0f, 0};  // exact: the binary node's own box
+        Lane lane{g, lanesBounds(nodes[g.node], g.lanes), 0.0f, 0};  // one lane: exactly its binary node's box
         lane.area = lane.box.surfaceArea();
         if (std::popcount(g.lanes) > 1) lane.parts = opensDescribeLanes(nodes[g.node]) ? 2 : std::popcount(g.lanes);
         else if (const uint32_t ref = nodes[g.node].child[std::countr_zero(g.lanes)]; !bvhIsLeaf(ref)) {
