@@ -70,11 +70,13 @@ int checkAgainstBruteForce(const SceneView& view, std::mt19937& gen, int rays) {
         const Ray ray{origin, normalize(Vec3(U(gen), U(gen), U(gen)))};
         float tBest = INFINITY;
         uint32_t objectBest = kNoObject;
+        ShapeHit best{};
         for (uint32_t o = 0; o < view.objects.count; ++o) {
             ShapeHit h;
             if (intersectObject(view, view.objects[o], ray, tBest, h)) {
                 tBest = h.t;
                 objectBest = o;
+                best = h;
             }
         }
         SurfaceHit hit;
@@ -84,6 +86,13 @@ int checkAgainstBruteForce(const SceneView& view, std::mt19937& gen, int rays) {
         ++hits;
         EXPECT_EQ(hit.t, tBest) << "ray " << i;
         EXPECT_EQ(hit.object, objectBest) << "ray " << i;
+        EXPECT_TRUE(hit.normal.x == best.normal.x && hit.normal.y == best.normal.y && hit.normal.z == best.normal.z)
+            << "ray " << i;
+        if (view.objects[objectBest].kind == ObjectKind::Mesh) {
+            EXPECT_EQ(hit.triangle, best.triangle) << "ray " << i;
+            EXPECT_EQ(hit.b1, best.b1) << "ray " << i;
+            EXPECT_EQ(hit.b2, best.b2) << "ray " << i;
+        }
         EXPECT_EQ(occluded(view, ray, tBest * 1.0001f), true);
         EXPECT_EQ(occluded(view, ray, tBest * 0.9999f), false) << "ray " << i;
     }
@@ -114,7 +123,7 @@ TEST(SceneBvh, NearestHitEqualsBruteForce) {
 }
 
 // A top level that is one leaf is not traversed (loneLeaf): its objects answer alone, rays that miss their
-// box included.
+// box included; a mesh alone in it answers its queries straight away (loneMeshObject).
 TEST(SceneBvh, OneLeafTopLevelEqualsBruteForce) {
     const std::string obj = writeSphereObj(8, 16);
     const std::vector<std::string> scenes = {
@@ -128,6 +137,7 @@ TEST(SceneBvh, OneLeafTopLevelEqualsBruteForce) {
         const FlattenResult flat = flatten(scene);
         const SceneView view = hostView(flat.arrays);
         ASSERT_NE(loneLeaf(view.topNodes.data), kBvhEmptyLane) << objects;
+        EXPECT_EQ(loneMeshObject(view) != kNoObject, objects.rfind("Mesh", 0) == 0) << objects;
         std::mt19937 gen(5);
         const int hits = checkAgainstBruteForce(view, gen, 4000);
         EXPECT_GT(hits, 200) << objects;

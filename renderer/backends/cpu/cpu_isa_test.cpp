@@ -105,17 +105,11 @@ TEST(CpuIsa, EveryPathRendersEveryShippedSceneAlike) {
     EXPECT_GT(scenes, 10);
 }
 
-// Two meshes apart (a bumpy sphere, and a flat grid of 32² quads whose rays through shared vertices and edges
-// hit several triangles at one t), their BVHs, and a top level over them.
-SceneArrays twoMeshes() {
-    SceneArrays arrays;
-    auto add = [&](const std::vector<Vec3>& p) {
-        PreparedMesh mesh;
-        for (size_t i = 0; i + 2 < p.size(); i += 3) mesh.triangles.push_back({p[i], p[i + 1], p[i + 2]});
-        mesh.corners.resize(mesh.triangles.size());
-        arrays.objects.push_back({ObjectKind::Mesh, appendMesh(mesh, arrays), 0});
-    };
-    add(tessellateSphere({0, 0, 0}, 1.0f, 60, 70, 0.08f));
+// A bumpy sphere, and a flat grid of 32² quads beside it whose rays through shared vertices and edges hit several
+// triangles at one t: each as its triangles' vertices, three by three.
+std::vector<Vec3> bumpySphere() { return tessellateSphere({0, 0, 0}, 1.0f, 60, 70, 0.08f); }
+
+std::vector<Vec3> quadGrid() {
     std::vector<Vec3> grid;
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 32; ++x) {
@@ -123,13 +117,26 @@ SceneArrays twoMeshes() {
                        c = a + Vec3(0, 0.125f, 0), d = a + Vec3(0.125f, 0.125f, 0);
             for (const Vec3& v : {a, b, d, a, d, c}) grid.push_back(v);
         }
-    add(grid);
+    return grid;
+}
+
+// Meshes of those triangles, their BVHs, and a top level over them.
+SceneArrays meshScene(const std::vector<std::vector<Vec3>>& meshes) {
+    SceneArrays arrays;
+    for (const std::vector<Vec3>& p : meshes) {
+        PreparedMesh mesh;
+        for (size_t i = 0; i + 2 < p.size(); i += 3) mesh.triangles.push_back({p[i], p[i + 1], p[i + 2]});
+        mesh.corners.resize(mesh.triangles.size());
+        arrays.objects.push_back({ObjectKind::Mesh, appendMesh(mesh, arrays), 0});
+    }
     std::vector<Aabb> bounds;
     for (uint32_t i = 0; i < arrays.meshes.size(); ++i)
         bounds.push_back(wideNodeBounds(arrays.meshNodes[arrays.meshes[i].nodeOffset]));
     arrays.topNodes = collapseBvh(buildBvh(bounds));
     return arrays;
 }
+
+SceneArrays twoMeshes() { return meshScene({bumpySphere(), quadGrid()}); }
 
 // The nearest triangle by brute force, of equal t the first in the array: what intersectMesh promises.
 bool bruteForceNearest(const SceneArrays& arrays, const Ray& ray, SurfaceHit& out) {
@@ -266,6 +273,62 @@ TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
     EXPECT_GT(hits, rays / 3);
     EXPECT_GT(blockedRays, shadowRays / 6);
     EXPECT_GT(ties, 100u);  // the tie-break is exercised
+}
+
+// A scene that is one mesh is queried straight through the mesh (loneMeshObject) on every path, over its four- and
+// its eight-wide tree: nearest hits (ties included) and shadow segments answer as brute force does.
+TEST(CpuIsa, LoneMeshAnswersAsBruteForce) {
+    std::vector<Vec3> both = bumpySphere();
+    const std::vector<Vec3> grid = quadGrid();
+    both.insert(both.end(), grid.begin(), grid.end());
+    const SceneArrays arrays = meshScene({both});
+    SceneArrays widened = arrays;
+    EightWideMeshes meshes8;
+    widenMeshBvhs(widened, meshes8, kMeshLeafGroup, 0);
+    SceneView views[2] = {hostView(arrays), hostView(widened)};
+    viewEightWide(views[1], meshes8);
+    ASSERT_EQ(loneMeshObject(views[0]), 0u);
+    const SceneArrays two = twoMeshes();
+    ASSERT_EQ(loneMeshObject(hostView(two)), kNoObject);
+
+    CounterUniform u(9);
+    const Vec3 origins[] = {{0.3f, 0.2f, 4.0f}, {4.5f, 0.1f, 2.0f}, {-3.0f, 0.5f, -0.5f}};
+    constexpr int kRays = 512;
+    size_t hits = 0, blocked = 0;
+    for (const Vec3& origin : origins) {
+        RayQuery nearest[kRays], shadow[kRays];
+        SurfaceHit expected[kRays];
+        bool found[kRays];
+        for (int i = 0; i < kRays; ++i) {
+            Vec3 d = u.direction();
+            if (i % 2) {  // a grid vertex or an edge midpoint
+                const float x = 3.0f + 0.0625f * std::floor(u(0.0f, 65.0f));
+                const float y = -2.0f + 0.0625f * std::floor(u(0.0f, 65.0f));
+                d = normalize(Vec3(x, y, 0.0f) - origin);
+            }
+            nearest[i] = RayQuery{Ray{origin, d}, INFINITY};
+            found[i] = bruteForceNearest(arrays, nearest[i].ray, expected[i]);
+            shadow[i] = RayQuery{nearest[i].ray, found[i] ? expected[i].t * u(0.5f, 1.5f) : 20.0f};
+            hits += found[i];
+            blocked += found[i] && expected[i].t < shadow[i].tMax;
+        }
+        for (CpuIsa isa : supportedIsas()) {
+            for (int tree = 0; tree < 2; ++tree) {
+                RayAnswer answers[kRays], shadowAnswers[kRays];
+                cpuKernelsFor(isa)->answerRayQueries(views[tree], nearest, kRays, RayQueryKind::Object, answers);
+                cpuKernelsFor(isa)->answerRayQueries(views[tree], shadow, kRays, RayQueryKind::Shadow, shadowAnswers);
+                for (int i = 0; i < kRays; ++i) {
+                    const std::string where = std::string(cpuIsaName(isa)) + (tree ? " eight" : " four") +
+                                              "-wide, ray " + std::to_string(i);
+                    EXPECT_EQ(answers[i].t, found[i] ? expected[i].t : INFINITY) << where;
+                    EXPECT_EQ(answers[i].object, found[i] ? 0 : kMissAnswer) << where;
+                    EXPECT_EQ(shadowAnswers[i].t != 0.0f, found[i] && expected[i].t < shadow[i].tMax) << where;
+                }
+            }
+        }
+    }
+    EXPECT_GT(hits, std::size(origins) * kRays / 3);
+    EXPECT_GT(blocked, hits / 4);
 }
 
 }  // namespace
