@@ -1,6 +1,7 @@
 // Ray–box slab test with the ray's inverse direction precomputed once per ray (host and device).
 #pragma once
 
+#include "core/host_simd.h"
 #include "core/ray.h"
 
 namespace trazo {
@@ -11,7 +12,14 @@ struct BoxRay {
 };
 
 TRAZO_HD BoxRay makeBoxRay(const Ray& ray) {
+#if TRAZO_HOST_SSE  // one vector division: the same quotients, a third of the divider's time (as makeTriangleRay)
+    alignas(16) float inv[4];
+    const __m128 d = _mm_setr_ps(ray.direction.x, ray.direction.y, ray.direction.z, 1.0f);
+    _mm_store_ps(inv, _mm_div_ps(_mm_set1_ps(1.0f), d));
+    return {ray.origin, Vec3(inv[0], inv[1], inv[2])};
+#else
     return {ray.origin, Vec3(1.0f / ray.direction.x, 1.0f / ray.direction.y, 1.0f / ray.direction.z)};
+#endif
 }
 
 // Widens each box's exit distance by 2·gamma(3) so rounding never culls a box a contained primitive is hit
