@@ -120,6 +120,13 @@ std::vector<Vec3> quadGrid() {
     return grid;
 }
 
+// A direction from `origin` through one of quadGrid's vertices or edge midpoints, where triangles tie.
+Vec3 towardsGridPoint(CounterUniform& u, Vec3 origin) {
+    const float x = 3.0f + 0.0625f * std::floor(u(0.0f, 65.0f));
+    const float y = -2.0f + 0.0625f * std::floor(u(0.0f, 65.0f));
+    return normalize(Vec3(x, y, 0.0f) - origin);
+}
+
 // Meshes of those triangles, their BVHs, and a top level over them.
 SceneArrays meshScene(const std::vector<std::vector<Vec3>>& meshes) {
     SceneArrays arrays;
@@ -196,13 +203,7 @@ TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
         for (int batch = 0; batch < 40; ++batch) {
             RayPacket packet;
             for (int i = 0; i < kPacketRays; ++i) {
-                Vec3 d;
-                if (batch % 2 == 0) {
-                    d = u.direction();
-                } else {  // a grid vertex or an edge midpoint
-                    const float x = 3.0f + 0.0625f * std::floor(u(0.0f, 65.0f)), y = -2.0f + 0.0625f * std::floor(u(0.0f, 65.0f));
-                    d = normalize(Vec3(x, y, 0.0f) - origin);
-                }
+                const Vec3 d = batch % 2 == 0 ? u.direction() : towardsGridPoint(u, origin);
                 packet.dx[i] = d.x, packet.dy[i] = d.y, packet.dz[i] = d.z, packet.tMax[i] = INFINITY;
             }
             SurfaceHit expected[kPacketRays];
@@ -300,12 +301,7 @@ TEST(CpuIsa, LoneMeshAnswersAsBruteForce) {
         SurfaceHit expected[kRays];
         bool found[kRays];
         for (int i = 0; i < kRays; ++i) {
-            Vec3 d = u.direction();
-            if (i % 2) {  // a grid vertex or an edge midpoint
-                const float x = 3.0f + 0.0625f * std::floor(u(0.0f, 65.0f));
-                const float y = -2.0f + 0.0625f * std::floor(u(0.0f, 65.0f));
-                d = normalize(Vec3(x, y, 0.0f) - origin);
-            }
+            const Vec3 d = i % 2 ? towardsGridPoint(u, origin) : u.direction();
             nearest[i] = RayQuery{Ray{origin, d}, INFINITY};
             found[i] = bruteForceNearest(arrays, nearest[i].ray, expected[i]);
             shadow[i] = RayQuery{nearest[i].ray, found[i] ? expected[i].t * u(0.5f, 1.5f) : 20.0f};
