@@ -70,6 +70,51 @@ int splitLanes(const WideBvhNode& node, uint32_t group, uint32_t parts[kBvhWidth
     return n;
 }
 
+// A binary node's subtree as widenBvh weighs it: its least SAH cost (area-weighted node visits and leaf-block tests)
+// when it takes at most j lanes of an eight-wide node, cost[j − 1] for j = 1 .. 8.
+struct SubtreeCost {
+    double cost[kBvh8Width];
+    uint32_t leaves, triangles;
+};
+
+// The choices that cost that, in one word: bit 0, as one lane, a node of its own (1) or a leaf lane (0); for j = 2 ..
+// 8, three bits from 3j − 5: 0 as in j − 1 lanes, k > 0 its children in k and j − k lanes; bits 22–24, as a node, the
+// lanes its left child takes (the right one the rest of eight).
+constexpr uint32_t choiceSplit(uint32_t choice, int j) { return (choice >> (3 * j - 5)) & 7u; }
+constexpr uint32_t choiceOpen(uint32_t choice) { return (choice >> 22) & 7u; }
+
+// The choices of a four-wide node's binary nodes of two or more lanes (at most three), by their lanes.
+struct NodeChoices {
+    uint32_t choice[3];
+    uint8_t lanes[3];
+};
+
+// Combines the children's costs into the parent's (Ylitie, Karras and Laine 2017, §4.1) and returns its choices.
+// `area`, `mayBeNode` and `mayBeLeaf` are the parent's.
+uint32_t weighChildren(const SubtreeCost& l, const SubtreeCost& r, double area, bool mayBeNode, uint32_t maxRun,
+                       SubtreeCost& out) {
+    const double inf = std::numeric_limits<double>::infinity();
+    out.leaves = l.leaves + r.leaves;
+    out.triangles = l.triangles + r.triangles;
+    double split[kBvh8Width + 1];
+    uint32_t at[kBvh8Width + 1];
+    for (int j = 2; j <= kBvh8Width; ++j) {
+        split[j] = inf, at[j] = 1;
+        for (int k = 1; k < j; ++k)
+            if (const double c = l.cost[k - 1] + r.cost[j - k - 1]; c < split[j]) split[j] = c, at[j] = (uint32_t)k;
+    }
+    const double asLeaf = out.leaves <= maxRun ? area * kWideBlockCost * double((out.triangles + 3) / 4) : inf;
+    const double asNode = mayBeNode ? area * kWideNodeCost + split[kBvh8Width] : inf;
+    uint32_t choice = (asNode < asLeaf ? 1u : 0u) | at[kBvh8Width] << 22;
+    out.cost[0] = std::min(asLeaf, asNode);
+    for (int j = 2; j <= kBvh8Width; ++j) {
+        const bool opens = split[j] < out.cost[j - 2];
+        out.cost[j - 1] = opens ? split[j] : out.cost[j - 2];
+        if (opens) choice |= at[j] << (3 * j - 5);
+    }
+    return choice;
+}
+
 uint32_t leafRefOf(const BvhNode& leaf) {
     if (leaf.primCount > kBvhMaxLeafSize || leaf.firstOrChild >= kBvhMaxFirstPrimitive)
         throw std::length_error("collapseBvh: a leaf is too large or starts too far to fit a child reference");
@@ -131,51 +176,64 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
     if (count == 0) return;
     if (leaves && groupLeaves > kBvhMaxLeafRun)
         throw std::invalid_argument("widenBvh: runs longer than kBvhMaxLeafRun");
+    const uint32_t maxRun = leaves ? groupLeaves : 1;
     const size_t base = out.size();  // the root; references count from it
-    // The leaves below each node. Depth first, the root at 0: one backward sweep sees children first.
-    std::vector<uint32_t> leavesBelow(count, 0);
-    for (size_t i = count; i-- > 0;)
-        for (uint32_t ref : nodes[i].child)
-            if (ref != kBvhEmptyLane) leavesBelow[i] += bvhIsLeaf(ref) ? 1 : leavesBelow[ref];
     // A binary node of the tree the four-wide one was collapsed from is a LaneGroup: some lanes of a four-wide node,
-    // or one lane naming a four-wide node, which stands for all of that node's lanes (read only when needed: on
-    // a large mesh each read of a node is a cache miss).
-    auto isLeaf = [&](LaneGroup g) {
-        return std::popcount(g.lanes) == 1 && bvhIsLeaf(nodes[g.node].child[std::countr_zero(g.lanes)]);
+    // or one lane naming a four-wide node, which stands for all of that node's lanes. Its children: the binary
+    // node's two, or for a flat node the first lane and the rest (a group weighed, never made a node of its own,
+    // so each node made is a binary node and kBvh8StackSize holds). Returns whether the rest may be a node.
+    auto children = [&](LaneGroup g, LaneGroup& left, LaneGroup& right) {
+        uint32_t parts[kBvhWidth] = {};
+        const int n = splitLanes(nodes[g.node], g.lanes, parts);
+        left = LaneGroup{g.node, parts[0]}, right = LaneGroup{g.node, g.lanes & ~parts[0]};
+        return n == 2;
     };
-    auto lanesOf = [&](LaneGroup g) {  // the same binary node as lanes of the node whose lanes are its children
-        if (std::popcount(g.lanes) == 1) {
+    // The group as the binary node's own lanes, where one lane names a node (and a node of one lane is that lane).
+    auto canonical = [&](LaneGroup g) {
+        while (std::popcount(g.lanes) == 1) {
             const uint32_t ref = nodes[g.node].child[std::countr_zero(g.lanes)];
-            if (!bvhIsLeaf(ref)) return LaneGroup{ref, usedLaneMask(nodes[ref])};
+            if (bvhIsLeaf(ref)) break;
+            g = LaneGroup{ref, usedLaneMask(nodes[ref])};
         }
         return g;
     };
-    auto leafCount = [&](LaneGroup g) {
-        uint32_t n = 0;
-        for (uint32_t m = g.lanes; m; m &= m - 1) {
-            const uint32_t ref = nodes[g.node].child[std::countr_zero(m)];
-            n += bvhIsLeaf(ref) ? 1 : leavesBelow[ref];
-        }
-        return n;
+    auto isLeaf = [&](LaneGroup g) { return std::popcount(g.lanes) == 1; };  // of a canonical group
+    auto area = [&](LaneGroup g) { return wideCostArea(lanesBounds(nodes[g.node], g.lanes)); };
+
+    // Bottom up: the nodes are depth first, so a backward sweep sees children first. Each four-wide node's binary
+    // nodes are weighed inside it; subtree[i] is node i's whole subtree.
+    std::vector<SubtreeCost> subtree(count);
+    std::vector<NodeChoices> choices(count);
+    for (size_t i = count; i-- > 0;) {
+        int slots = 0;
+        auto weigh = [&](LaneGroup g, bool mayBeNode, auto&& self) -> SubtreeCost {
+            if (std::popcount(g.lanes) == 1) {
+                const uint32_t ref = nodes[g.node].child[std::countr_zero(g.lanes)];
+                if (!bvhIsLeaf(ref)) return subtree[ref];
+                SubtreeCost leaf;
+                leaf.leaves = 1, leaf.triangles = bvhLeafCount(ref);
+                for (double& c : leaf.cost) c = area(g) * kWideBlockCost;  // ≤ kBvhMaxLeafSize triangles: one block
+                return leaf;
+            }
+            LaneGroup left, right;
+            const bool restMayBeNode = children(g, left, right);
+            const SubtreeCost l = self(left, true, self), r = self(right, restMayBeNode, self);
+            SubtreeCost made;
+            choices[i].choice[slots] = weighChildren(l, r, area(g), mayBeNode, maxRun, made);
+            choices[i].lanes[slots++] = (uint8_t)g.lanes;
+            return made;
+        };
+        const uint32_t used = usedLaneMask(nodes[i]);
+        if (used == 0) throw std::invalid_argument("widenBvh: a node without children");
+        subtree[i] = weigh(LaneGroup{(uint32_t)i, used}, true, weigh);
+    }
+    auto choiceOf = [&](LaneGroup g) {
+        const NodeChoices& c = choices[g.node];
+        for (int s = 0; s < 3; ++s)
+            if (c.lanes[s] == g.lanes) return c.choice[s];
+        throw std::logic_error("widenBvh: a binary node that was not weighed");
     };
-    // A lane of the eight-wide node being made, and what choosing the lane to open asks of it.
-    struct Lane {
-        LaneGroup group;
-        Aabb box;
-        float area;
-        int parts;  // the lanes its children take (2; a flat node's lanes; 0 for a leaf); a guess until opened
-    };
-    auto makeLane = [&](LaneGroup g) {
-        Lane lane{g, lanesBounds(nodes[g.node], g.lanes), 0.0f, 0};  // one lane: exactly its binary node's box
-        lane.area = lane.box.surfaceArea();
-        if (std::popcount(g.lanes) > 1) lane.parts = opensDescribeLanes(nodes[g.node]) ? 2 : std::popcount(g.lanes);
-        else if (const uint32_t ref = nodes[g.node].child[std::countr_zero(g.lanes)]; !bvhIsLeaf(ref)) {
-            lane.parts = 2;  // the four-wide node below is not read yet, only fetched
-            __builtin_prefetch(nodes + ref);
-            __builtin_prefetch(reinterpret_cast<const char*>(nodes + ref) + 64);
-        }
-        return lane;
-    };
+
     // A run of leaves in `leaves`, in primitive order, as a lane's reference.
     auto leafRun = [&](LaneGroup g) {
         uint32_t refs[kBvhMaxLeafRun];
@@ -197,60 +255,58 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
         leaves->insert(leaves->end(), refs, refs + n);
         return bvhLeafRef(first, n);
     };
-    out.reserve(base + count);
+
+    // Top down: each node made takes its binary node's children in the lanes the choices give them.
     out.push_back(emptyWideNode<WideBvhNode8>());
-    // (binary node, the eight-wide node that takes its children), depth first.
-    std::vector<std::pair<LaneGroup, uint32_t>> pending{{LaneGroup{0u, usedLaneMask(nodes[0])}, 0u}};
+    std::vector<std::pair<LaneGroup, uint32_t>> pending{{canonical(LaneGroup{0u, usedLaneMask(nodes[0])}), 0u}};
     while (!pending.empty()) {
-        const auto [seed, made] = pending.back();
+        const auto [binary, made] = pending.back();
         pending.pop_back();
-        Lane lanes[kBvh8Width];
+        LaneGroup lanes[kBvh8Width];
         int used = 0;
-        // Opens binary node g into lanes[i] and new lanes, if its children fit; else returns how many they are.
-        auto open = [&](LaneGroup g, int i) {
-            g = lanesOf(g);
-            uint32_t masks[kBvhWidth] = {};
-            const int parts = splitLanes(nodes[g.node], g.lanes, masks);
-            if (used - 1 + parts > kBvh8Width) return parts;
-            lanes[i] = makeLane(LaneGroup{g.node, masks[0]});
-            for (int k = 1; k < parts; ++k) lanes[used++] = makeLane(LaneGroup{g.node, masks[k]});
-            return 0;
-        };
-        if (isLeaf(seed)) {
-            lanes[used++] = makeLane(seed);
+        std::pair<LaneGroup, int> split[2 * kBvh8Width];  // (binary node, the lanes it takes), the leftmost on top
+        int size = 0;
+        if (isLeaf(binary)) {  // a tree of one leaf
+            lanes[used++] = binary;
         } else {
-            ++used;
-            open(seed, 0);  // at most four children: they fit
+            LaneGroup left, right;
+            children(binary, left, right);
+            const int open = (int)choiceOpen(choiceOf(binary));
+            split[size++] = {canonical(right), kBvh8Width - open};
+            split[size++] = {canonical(left), open};
         }
-        // While lanes are left, open the interior child of largest surface area (the one a ray is most likely to
-        // enter); what is left stays a lane.
-        for (;;) {
-            int widest = -1;
-            for (int i = 0; i < used; ++i)
-                if (lanes[i].parts > 0 && used - 1 + lanes[i].parts <= kBvh8Width &&
-                    (widest < 0 || lanes[i].area > lanes[widest].area))
-                    widest = i;
-            if (widest < 0) break;
-            if (const int parts = open(lanes[widest].group, widest)) lanes[widest].parts = parts;  // guessed wrong
+        while (size > 0) {
+            auto [g, j] = split[--size];
+            const uint32_t choice = isLeaf(g) ? 0u : choiceOf(g);
+            while (j > 1 && choiceSplit(choice, j) == 0) --j;
+            if (j == 1) {
+                lanes[used++] = g;
+                continue;
+            }
+            const int k = (int)choiceSplit(choice, j);
+            LaneGroup left, right;
+            children(g, left, right);
+            split[size++] = {canonical(right), j - k};
+            split[size++] = {canonical(left), k};
         }
-        // A leaf left over is a lane; with `leaves`, so is a subtree of at most groupLeaves leaves.
         uint32_t refs[kBvh8Width];
         for (int i = 0; i < used; ++i) {
-            const LaneGroup g = lanes[i].group;
-            if (isLeaf(g)) {
-                refs[i] = leaves ? leafRun(g) : nodes[g.node].child[std::countr_zero(g.lanes)];
-            } else if (leaves && leafCount(g) <= groupLeaves) {
-                refs[i] = leafRun(g);
-            } else {
+            const LaneGroup g = lanes[i];
+            if (!isLeaf(g) && (choiceOf(g) & 1u)) {
                 refs[i] = (uint32_t)(out.size() - base);
                 out.push_back(emptyWideNode<WideBvhNode8>());
+            } else {
+                refs[i] = leaves ? leafRun(g) : nodes[g.node].child[std::countr_zero(g.lanes)];
             }
         }
         WideBvhNode8& node = out[base + made];
-        for (int i = 0; i < used; ++i) setLane(node, i, lanes[i].box.min, lanes[i].box.max, refs[i]);
+        for (int i = 0; i < used; ++i) {
+            const Aabb box = lanesBounds(nodes[lanes[i].node], lanes[i].lanes);  // exactly its binary node's box
+            setLane(node, i, box.min, box.max, refs[i]);
+        }
         // Children are pushed in reverse so the first lane's subtree is laid out right after this node.
         for (int i = used - 1; i >= 0; --i)
-            if (!bvhIsLeaf(refs[i])) pending.push_back({lanes[i].group, refs[i]});
+            if (!bvhIsLeaf(refs[i])) pending.push_back({lanes[i], refs[i]});
     }
 }
 

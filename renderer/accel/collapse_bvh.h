@@ -56,22 +56,37 @@ Aabb usedLanesBounds(const Node& node) {
 // root with one leaf child; an empty one stays empty. Needs leaves of ≤ kBvhMaxLeafSize primitives.
 std::vector<WideBvhNode> collapseBvh(const Bvh& bvh);
 
+// What widenBvh weighs: a node visit as three leaf-block tests. A node is eight slab tests, a sort and a stack; most
+// block tests end at the edge functions. With 1 : 1 the trees took 15 % less cost and traced no faster; from 3 to 6
+// the million-triangle sphere's rays were 4–10 % faster than the greedy trees' (bvh_bench, one thread).
+constexpr double kWideNodeCost = 3.0;
+constexpr double kWideBlockCost = 1.0;
+
+// A box's surface area as widenBvh weighs it: in double, finite for any box of finite bounds (in float it may not be).
+inline double wideCostArea(const Aabb& box) {
+    if (box.empty()) return 0.0;
+    const double x = (double)box.max.x - box.min.x, y = (double)box.max.y - box.min.y,
+                 z = (double)box.max.z - box.min.z;
+    return 2.0 * (x * y + y * z + z * x);
+}
+
 // The eight-wide tree of a four-wide one made by collapseBvh (nodes[0] its root, `count` nodes), as if collapsed
 // from their binary tree: the lanes of each four-wide node are regrouped into the binary nodes they were opened
-// from (WideBvhNode::opened), and each eight-wide node takes a binary node's children and, while they fit in
-// eight lanes, opens the child of largest surface area (fuller nodes, and closer to Embree's trees, than
-// opening whole four-wide nodes: bvh_bench). Leaves, their references and the primitive order stay as they are,
-// so a closest-hit query answers the same over either tree; each node is a binary node, so a traversal keeps at
-// most kBvh8StackSize entries. Laid out depth first, the root at 0; empty for count = 0. A node whose `opened`
-// does not describe it is taken as flat (its lanes the binary node's children).
+// from (WideBvhNode::opened), and of all eight-wide trees whose nodes are binary nodes, each node's lanes subtrees
+// below it, the one of least SAH cost is made (Ylitie, Karras and Laine 2017, §4.1: dynamic programming over the
+// binary nodes): Σ over nodes of area · kWideNodeCost, plus Σ over leaf lanes of area · blocks of four triangles ·
+// kWideBlockCost, areas by wideCostArea. Leaves, their references and the primitive order stay as they are, so a
+// closest-hit query answers the same over either tree; each node is a binary node, so a traversal keeps at most
+// kBvh8StackSize entries. Laid out depth first, the root at 0; empty for count = 0. A node whose `opened` does not
+// describe it is taken as flat (its lanes the binary node's children).
 std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count);
 // The same appended to `out`, its references counted from the first node appended.
 //
 // With `leaves`, each leaf lane names a run of the four-wide tree's leaves instead, their references appended to
 // `leaves` in primitive order: bvhLeafFirst is where the run starts there, bvhLeafCount its length. A run is one
-// leaf, or all the leaves of a subtree of at most `groupLeaves` (≤ kBvhMaxLeafRun) of them, which is never opened:
-// one lane whose leaves a ray tests together, instead of nodes of its own (node visits less at the price of
-// wider leaf tests).
+// leaf, or all the leaves of a subtree of at most `groupLeaves` (≤ kBvhMaxLeafRun) of them, weighed as its
+// triangles packed four to a block (widenMeshBvhs): one lane whose leaves a ray tests together, instead of nodes of
+// its own.
 constexpr uint32_t kBvhMaxLeafRun = 4;  // a run's length fits a reference's count bits
 void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>& out,
               std::vector<uint32_t>* leaves = nullptr, uint32_t groupLeaves = 1);

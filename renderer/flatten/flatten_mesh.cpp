@@ -324,8 +324,9 @@ TriangleBlock transposeTriangles(const MeshTriangle* triangles, uint32_t first, 
 
 // A leaf lane of widenBvh's, naming the run runLeaves[bvhLeafFirst(ref), +bvhLeafCount(ref)) of four-wide
 // leaves, as blocks: the run's triangles are consecutive (a subtree's, in BVH order), so they fill blocks four
-// at a time however the leaves split them (bvh_bench: a ray tests 5.18 blocks on the bunny where one block a leaf
-// took 5.63, 5.39 where 5.61 on a million triangles). Returns the lane's reference to its blocks.
+// at a time however the leaves split them (bvh_bench, over trees widened greedily: a ray tests 5.18 blocks on the
+// bunny where one block a leaf took 5.63, 5.39 where 5.61 on a million triangles). Returns the lane's reference to
+// its blocks.
 uint32_t appendRunBlocks(uint32_t ref, const std::vector<uint32_t>& runLeaves, const MeshTriangle* triangles,
                          std::vector<TriangleBlock>& blocks) {
     const uint32_t* run = runLeaves.data() + bvhLeafFirst(ref);

@@ -109,7 +109,7 @@ public:
 
 private:
     // The kernels' view of arrays_; where they are AVX2 or AVX-512 ones, with the meshes' eight-wide BVHs and
-    // leaf blocks, made again when the meshes changed (widenMeshBvhs: 35 ms and 57 MB for a million triangles in
+    // leaf blocks, made again when the meshes changed (widenMeshBvhs: 60 ms and 57 MB for a million triangles in
     // the memory of the last upload, against 0.4 s for their BVH; build/bench/bvh/bvh_bench).
     void makeView(bool meshesChanged) {
         if (meshesChanged && kernels_.isa != CpuIsa::Sse2) widenMeshBvhs(arrays_, meshes8_);
