@@ -159,8 +159,9 @@ TEST(WidenMeshBvhs, EveryLeafNamesFullBlocksOfItsOwnTriangles) {
                     ASSERT_LE(bvhLeafFirst(ref) + bvhLeafCount(ref), wide.blocks.size());
                     ASSERT_LE(bvhLeafCount(ref), group);
                     const TriangleBlock* blocks = wide.blocks.data() + bvhLeafFirst(ref);
-                    if (group == 1)
+                    if (group == 1) {
                         EXPECT_TRUE(fourWideLeaves.count({m, bvhLeafRef(blocks[0].first, blocks[0].count)}));
+                    }
                     for (uint32_t b = 0; b < bvhLeafCount(ref); ++b) {
                         const TriangleBlock& block = blocks[b];
                         ++blockUses[bvhLeafFirst(ref) + b];
@@ -190,7 +191,9 @@ TEST(WidenMeshBvhs, EveryLeafNamesFullBlocksOfItsOwnTriangles) {
             leafBlocks = wide.blocks.size();
         } else {
             EXPECT_LE(wide.blocks.size(), leafBlocks) << "runs of " << group;
-            if (group == 4) EXPECT_LT(wide.blocks.size(), leafBlocks);  // here some runs of three or four fit fewer
+            if (group == 4) {
+                EXPECT_LT(wide.blocks.size(), leafBlocks);  // here some runs of three or four fit fewer
+            }
         }
     }
 }

@@ -1,6 +1,7 @@
 // A BVH leaf's triangles (at most four) against one ray (host and device): the nearest hit, and whether any
-// hits. The device loops over intersectTriangle; the host tests the four at once with SSE, the same IEEE
-// operations in the same order lane by lane, so both backends find the same triangle at the same t.
+// hits. The device loops over intersectTriangle; the host tests the four at once with SSE (and, in the AVX2 and
+// AVX-512 kernels, two blocks of four at once), the same IEEE operations in the same order lane by lane, so both
+// backends find the same triangle at the same t.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +18,7 @@ struct MeshTriangle {
     Vec3 p0, p1, p2;
 };
 
-// Up to four consecutive triangles of a mesh transposed for four-lane tests: v[k][axis][lane] is vertex k of
+// Up to four consecutive triangles of a mesh transposed for lane tests: v[k][axis][lane] is vertex k of
 // triangle first + lane (lanes past count repeat the first). Host only: where the CPU backend traverses meshes
 // over eight-wide nodes, their leaves refer to these (flatten/flatten_mesh.h, widenMeshBvhs), so a leaf test
 // loads its vertices as they are used instead of gathering and transposing four 36-byte triangles.
@@ -61,6 +62,47 @@ TRAZO_HD bool anyTriangleHit(const TriangleRay& r, const MeshTriangle* triangles
 #if TRAZO_HOST_SSE
 namespace triangle_detail {
 
+// The lane operations intersectLanesAlong takes: four lanes (SSE2), or eight where host code is compiled for AVX2.
+struct Lanes4 {
+    using V = __m128;
+    enum : int { kAll = 0xf };  // every lane's bit (an enumerator: -fno-weak mishandles inline variables)
+    static V set1(float x) { return _mm_set1_ps(x); }
+    static V zero() { return _mm_setzero_ps(); }
+    static V add(V a, V b) { return _mm_add_ps(a, b); }
+    static V sub(V a, V b) { return _mm_sub_ps(a, b); }
+    static V mul(V a, V b) { return _mm_mul_ps(a, b); }
+    static V div(V a, V b) { return _mm_div_ps(a, b); }
+    static V bitAnd(V a, V b) { return _mm_and_ps(a, b); }
+    static V bitOr(V a, V b) { return _mm_or_ps(a, b); }
+    static V andNot(V a, V b) { return _mm_andnot_ps(a, b); }
+    static V equal(V a, V b) { return _mm_cmpeq_ps(a, b); }
+    static V less(V a, V b) { return _mm_cmplt_ps(a, b); }
+    static V greater(V a, V b) { return _mm_cmpgt_ps(a, b); }
+    static int mask(V a) { return _mm_movemask_ps(a); }
+    static void store(float* out, V a) { _mm_store_ps(out, a); }
+};
+
+#if TRAZO_HOST_AVX
+struct Lanes8 {
+    using V = __m256;
+    enum : int { kAll = 0xff };
+    static V set1(float x) { return _mm256_set1_ps(x); }
+    static V zero() { return _mm256_setzero_ps(); }
+    static V add(V a, V b) { return _mm256_add_ps(a, b); }
+    static V sub(V a, V b) { return _mm256_sub_ps(a, b); }
+    static V mul(V a, V b) { return _mm256_mul_ps(a, b); }
+    static V div(V a, V b) { return _mm256_div_ps(a, b); }
+    static V bitAnd(V a, V b) { return _mm256_and_ps(a, b); }
+    static V bitOr(V a, V b) { return _mm256_or_ps(a, b); }
+    static V andNot(V a, V b) { return _mm256_andnot_ps(a, b); }
+    static V equal(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_EQ_OQ); }
+    static V less(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_LT_OQ); }
+    static V greater(V a, V b) { return _mm256_cmp_ps(a, b, _CMP_GT_OQ); }
+    static int mask(V a) { return _mm256_movemask_ps(a); }
+    static void store(float* out, V a) { _mm256_store_ps(out, a); }
+};
+#endif
+
 // Four triangles' vertices as structure of arrays: v[k][axis] holds vertex k's coordinate on that axis.
 struct Triangles4 {
     __m128 v[3][3];
@@ -93,77 +135,96 @@ struct TriangleSpan {
 };
 
 inline Triangles4 transposedLeaf(TriangleSpan leaf) { return loadTriangles4(leaf.triangles, leaf.count); }
-inline const TriangleBlock& transposedLeaf(const TriangleBlock& block) { return block; }
 
-// A block as the any-hit test reads it: an intersect4 of its own, so the closest-hit test's keeps one caller
-// (with two, GCC called it out of line from the closest-hit traversal: bvh_bench's bunny primary rays 4.5 %
-// slower; forcing it inline instead cost the four-wide any-hit path).
-struct AnyHitBlock {
-    const TriangleBlock& block;
-};
-inline const TriangleBlock& transposedLeaf(AnyHitBlock leaf) { return leaf.block; }
-
-// Vertex k's coordinates on one axis, four lanes, from either form of a transposed leaf.
+// Vertex k's coordinates on one axis, four lanes.
 inline __m128 vertexLanes(const Triangles4& tri, int k, int axis) { return tri.v[k][axis]; }
-inline __m128 vertexLanes(const TriangleBlock& block, int k, int axis) { return _mm_load_ps(block.v[k][axis]); }
 
-// intersectSheared for four triangles (a TriangleSpan or a TriangleBlock). Returns the mask of lanes hit within
-// (tMin, tMax), with t and the reciprocal determinant per lane, or −1 when a lane has an edge function of
-// exactly zero: the caller then falls back to the scalar test, which re-evaluates it in double.
-// A span is transposed here rather than by the caller, so its vertices stay in registers (any-hit traversal:
-// 3-4 % fewer rays a second the other way, bvh_bench).
-template <int KZ, class Leaf>
-inline int intersect4Along(const TriangleRay& r, const Leaf& leaf, float tMin, float tMax, __m128& t, __m128& invDet,
-                           __m128& v, __m128& w) {
+#if TRAZO_HOST_AVX
+// Two blocks tested together, eight lanes: the first's four, then the second's (the same block twice for one).
+struct BlockPair {
+    const TriangleBlock& first;
+    const TriangleBlock& second;
+};
+inline const BlockPair& transposedLeaf(const BlockPair& pair) { return pair; }
+
+// A pair as the any-hit test reads it: an intersectLanes of its own, so the closest-hit test's keeps one caller
+// (with two callers, GCC called a block test out of line from the closest-hit traversal: bvh_bench's bunny primary
+// rays 4.5 % slower).
+struct AnyHitPair {
+    BlockPair pair;
+};
+inline const BlockPair& transposedLeaf(const AnyHitPair& leaf) { return leaf.pair; }
+
+inline __m256 vertexLanes(const BlockPair& pair, int k, int axis) {
+    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_load_ps(pair.first.v[k][axis])),
+                                _mm_load_ps(pair.second.v[k][axis]), 1);
+}
+#endif
+
+// intersectSheared for four or eight triangles (a TriangleSpan, or a BlockPair where host code is compiled for
+// AVX2). Returns the mask of lanes hit within (tMin, tMax), with t and the reciprocal determinant per lane, or −1
+// when a lane has an edge function of exactly zero: the caller then falls back to the scalar test, which
+// re-evaluates it in double. A span is transposed here rather than by the caller, so its vertices stay in
+// registers (any-hit traversal: 3-4 % fewer rays a second the other way, bvh_bench).
+template <class L, int KZ, class Leaf>
+inline int intersectLanesAlong(const TriangleRay& r, const Leaf& leaf, float tMin, float tMax, typename L::V& t,
+                               typename L::V& invDet, typename L::V& v, typename L::V& w) {
+    using V = typename L::V;
     constexpr int KX = KZ == 2 ? 0 : KZ + 1, KY = KX == 2 ? 0 : KX + 1;
     const auto& tri = transposedLeaf(leaf);
-    const __m128 ox = _mm_set1_ps(r.origin[KX]), oy = _mm_set1_ps(r.origin[KY]), oz = _mm_set1_ps(r.origin[KZ]);
-    const __m128 sx = _mm_set1_ps(r.sx), sy = _mm_set1_ps(r.sy), sz = _mm_set1_ps(r.sz);
-    __m128 x[3], y[3], z[3];
+    const V ox = L::set1(r.origin[KX]), oy = L::set1(r.origin[KY]), oz = L::set1(r.origin[KZ]);
+    const V sx = L::set1(r.sx), sy = L::set1(r.sy), sz = L::set1(r.sz);
+    V x[3], y[3], z[3];
     for (int k = 0; k < 3; ++k) {
-        const __m128 px = _mm_sub_ps(vertexLanes(tri, k, KX), ox), py = _mm_sub_ps(vertexLanes(tri, k, KY), oy);
-        z[k] = _mm_sub_ps(vertexLanes(tri, k, KZ), oz);
-        x[k] = _mm_sub_ps(px, _mm_mul_ps(sx, z[k]));
-        y[k] = _mm_sub_ps(py, _mm_mul_ps(sy, z[k]));
+        const V px = L::sub(vertexLanes(tri, k, KX), ox), py = L::sub(vertexLanes(tri, k, KY), oy);
+        z[k] = L::sub(vertexLanes(tri, k, KZ), oz);
+        x[k] = L::sub(px, L::mul(sx, z[k]));
+        y[k] = L::sub(py, L::mul(sy, z[k]));
     }
     // triangleEdge(c, b), (a, c), (b, a): px·qy − py·qx.
-    const __m128 u = _mm_sub_ps(_mm_mul_ps(x[2], y[1]), _mm_mul_ps(y[2], x[1]));
-    v = _mm_sub_ps(_mm_mul_ps(x[0], y[2]), _mm_mul_ps(y[0], x[2]));
-    w = _mm_sub_ps(_mm_mul_ps(x[1], y[0]), _mm_mul_ps(y[1], x[0]));
-    const __m128 zero = _mm_setzero_ps();
-    const __m128 anyZero = _mm_or_ps(_mm_cmpeq_ps(u, zero), _mm_or_ps(_mm_cmpeq_ps(v, zero), _mm_cmpeq_ps(w, zero)));
-    if (_mm_movemask_ps(anyZero)) return -1;
-    const __m128 anyNegative = _mm_or_ps(_mm_cmplt_ps(u, zero), _mm_or_ps(_mm_cmplt_ps(v, zero), _mm_cmplt_ps(w, zero)));
-    const __m128 anyPositive = _mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_or_ps(_mm_cmpgt_ps(v, zero), _mm_cmpgt_ps(w, zero)));
-    const __m128 mixedSigns = _mm_and_ps(anyNegative, anyPositive);
-    if (_mm_movemask_ps(mixedSigns) == 0xf) return 0;  // most leaves a ray reaches: no division needed
-    const __m128 det = _mm_add_ps(_mm_add_ps(u, v), w);
-    const __m128 tScaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(u, _mm_mul_ps(sz, z[0])), _mm_mul_ps(v, _mm_mul_ps(sz, z[1]))),
-                                      _mm_mul_ps(w, _mm_mul_ps(sz, z[2])));
-    invDet = _mm_div_ps(_mm_set1_ps(1.0f), det);
-    t = _mm_mul_ps(tScaled, invDet);
+    const V u = L::sub(L::mul(x[2], y[1]), L::mul(y[2], x[1]));
+    v = L::sub(L::mul(x[0], y[2]), L::mul(y[0], x[2]));
+    w = L::sub(L::mul(x[1], y[0]), L::mul(y[1], x[0]));
+    const V zero = L::zero();
+    const V anyZero = L::bitOr(L::equal(u, zero), L::bitOr(L::equal(v, zero), L::equal(w, zero)));
+    if (L::mask(anyZero)) return -1;
+    const V anyNegative = L::bitOr(L::less(u, zero), L::bitOr(L::less(v, zero), L::less(w, zero)));
+    const V anyPositive = L::bitOr(L::greater(u, zero), L::bitOr(L::greater(v, zero), L::greater(w, zero)));
+    const V mixedSigns = L::bitAnd(anyNegative, anyPositive);
+    if (L::mask(mixedSigns) == L::kAll) return 0;  // most leaves a ray reaches: no division needed
+    const V det = L::add(L::add(u, v), w);
+    const V tScaled =
+        L::add(L::add(L::mul(u, L::mul(sz, z[0])), L::mul(v, L::mul(sz, z[1]))), L::mul(w, L::mul(sz, z[2])));
+    invDet = L::div(L::set1(1.0f), det);
+    t = L::mul(tScaled, invDet);
     // A lane with mixed signs or det = 0 misses; so does a NaN t (the comparisons fail).
-    const __m128 inRange = _mm_and_ps(_mm_cmpgt_ps(t, _mm_set1_ps(tMin)), _mm_cmplt_ps(t, _mm_set1_ps(tMax)));
-    const __m128 hit = _mm_andnot_ps(_mm_or_ps(mixedSigns, _mm_cmpeq_ps(det, zero)), inRange);
-    return _mm_movemask_ps(hit);
+    const V inRange = L::bitAnd(L::greater(t, L::set1(tMin)), L::less(t, L::set1(tMax)));
+    const V hit = L::andNot(L::bitOr(mixedSigns, L::equal(det, zero)), inRange);
+    return L::mask(hit);
 }
 
-template <class Leaf>
-inline int intersect4(const TriangleRay& r, const Leaf& leaf, float tMin, float tMax, __m128& t, __m128& invDet,
-                      __m128& v, __m128& w) {
-    if (r.kz == 2) return intersect4Along<2>(r, leaf, tMin, tMax, t, invDet, v, w);
-    if (r.kz == 0) return intersect4Along<0>(r, leaf, tMin, tMax, t, invDet, v, w);
-    return intersect4Along<1>(r, leaf, tMin, tMax, t, invDet, v, w);
+template <class L, class Leaf>
+inline int intersectLanes(const TriangleRay& r, const Leaf& leaf, float tMin, float tMax, typename L::V& t,
+                          typename L::V& invDet, typename L::V& v, typename L::V& w) {
+    if (r.kz == 2) return intersectLanesAlong<L, 2>(r, leaf, tMin, tMax, t, invDet, v, w);
+    if (r.kz == 0) return intersectLanesAlong<L, 0>(r, leaf, tMin, tMax, t, invDet, v, w);
+    return intersectLanesAlong<L, 1>(r, leaf, tMin, tMax, t, invDet, v, w);
 }
 
 // The nearest of the lanes in `mask` (the first of equal ones), as intersectTrianglesLoop would report it.
-inline bool nearestLane(int mask, __m128 t, __m128 invDet, __m128 v, __m128 w, TriangleHit& hit, uint32_t& which) {
+template <class L>
+inline bool nearestLane(int mask, typename L::V t, typename L::V invDet, typename L::V v, typename L::V w,
+                        TriangleHit& hit, uint32_t& which) {
     if (!mask) return false;
-    alignas(16) float ts[4], invDets[4], vs[4], ws[4];
-    _mm_store_ps(ts, t), _mm_store_ps(invDets, invDet), _mm_store_ps(vs, v), _mm_store_ps(ws, w);
-    int best = -1;
-    for (int k = 0; k < 4; ++k)
-        if ((mask & (1 << k)) && (best < 0 || ts[k] < ts[best])) best = k;
+    constexpr int kWidth = sizeof(typename L::V) / sizeof(float);
+    alignas(32) float ts[kWidth], invDets[kWidth], vs[kWidth], ws[kWidth];
+    L::store(ts, t);
+    int best = __builtin_ctz((unsigned)mask);
+    for (unsigned m = (unsigned)mask & ((unsigned)mask - 1); m; m &= m - 1) {  // the lanes hit, not all eight
+        const int k = __builtin_ctz(m);
+        if (ts[k] < ts[best]) best = k;
+    }
+    L::store(invDets, invDet), L::store(vs, v), L::store(ws, w);
     hit.t = ts[best];
     hit.b1 = vs[best] * invDets[best];
     hit.b2 = ws[best] * invDets[best];
@@ -180,33 +241,47 @@ TRAZO_HD bool intersectTriangleLeaf(const TriangleRay& r, const MeshTriangle* tr
 #if TRAZO_HOST_SSE
     using namespace triangle_detail;
     __m128 t, invDet, v, w;
-    int mask = intersect4(r, TriangleSpan{triangles, count}, tMin, tMax, t, invDet, v, w);
+    int mask = intersectLanes<Lanes4>(r, TriangleSpan{triangles, count}, tMin, tMax, t, invDet, v, w);
     if (mask < 0) return intersectTrianglesLoop(r, triangles, count, tMin, tMax, hit, which);
-    return nearestLane(mask & ((1 << count) - 1), t, invDet, v, w, hit, which);
+    return nearestLane<Lanes4>(mask & ((1 << count) - 1), t, invDet, v, w, hit, which);
 #else
     return intersectTrianglesLoop(r, triangles, count, tMin, tMax, hit, which);
 #endif
 }
 
-#if TRAZO_HOST_SSE
-// intersectTriangleLeaf over a block's triangles (the mesh's from block.first), the same answer bit for bit.
-inline bool intersectTriangleBlock(const TriangleRay& r, const TriangleBlock& block, const MeshTriangle* triangles,
-                                   uint32_t count, float tMin, float tMax, TriangleHit& hit, uint32_t& which) {
+#if TRAZO_HOST_AVX
+// A leaf lane's blocks (1–4, consecutive, all full but the last) as the pairs they are tested in: blocks[0] and
+// blocks[1], or blocks[0] alone where it is the last. Eight lanes cost a 256-bit unit what four do; against a block
+// at a time (bvh_bench, one thread, interleaved): bunny random rays 1.05–1.07×, the million-triangle sphere's camera
+// and shadow rays 1.03–1.05×, bunny camera rays 0.98–1.07×.
+struct BlockRun {
+    const TriangleBlock* blocks;
+    bool pair;
+    triangle_detail::BlockPair lanes() const { return {blocks[0], blocks[pair ? 1 : 0]}; }
+    uint32_t count() const { return pair ? 4 + blocks[1].count : blocks[0].count; }
+    int laneMask() const { return pair ? 0x0f | ((1 << blocks[1].count) - 1) << 4 : (1 << blocks[0].count) - 1; }
+};
+
+// intersectTriangleLeaf over the run's triangles (the mesh's from blocks[0].first), the same answer bit for bit:
+// `which` counts from blocks[0].first.
+inline bool intersectBlockRun(const TriangleRay& r, const BlockRun& run, const MeshTriangle* triangles, float tMin,
+                              float tMax, TriangleHit& hit, uint32_t& which) {
     using namespace triangle_detail;
-    __m128 t, invDet, v, w;
-    const int mask = intersect4(r, block, tMin, tMax, t, invDet, v, w);
-    if (mask < 0) return intersectTrianglesLoop(r, triangles + block.first, count, tMin, tMax, hit, which);
-    return nearestLane(mask & ((1 << count) - 1), t, invDet, v, w, hit, which);
+    __m256 t = _mm256_setzero_ps(), invDet = t, v = t, w = t;  // set only where a lane is hit
+    const int mask = intersectLanes<Lanes8>(r, run.lanes(), tMin, tMax, t, invDet, v, w);
+    if (mask < 0)
+        return intersectTrianglesLoop(r, triangles + run.blocks[0].first, run.count(), tMin, tMax, hit, which);
+    return nearestLane<Lanes8>(mask & run.laneMask(), t, invDet, v, w, hit, which);
 }
 
-// Whether any of the block's triangles is hit within (tMin, tMax): triangleLeafBlocks over them.
-inline bool triangleBlockBlocks(const TriangleRay& r, const TriangleBlock& block, const MeshTriangle* triangles,
-                                float tMin, float tMax) {
+// Whether any of the run's triangles is hit within (tMin, tMax): triangleLeafBlocks over them.
+inline bool blockRunBlocks(const TriangleRay& r, const BlockRun& run, const MeshTriangle* triangles, float tMin,
+                           float tMax) {
     using namespace triangle_detail;
-    __m128 t, invDet, v, w;
-    const int mask = intersect4(r, AnyHitBlock{block}, tMin, tMax, t, invDet, v, w);
-    if (mask >= 0) return (mask & ((1 << block.count) - 1)) != 0;
-    return anyTriangleHit(r, triangles + block.first, block.count, tMin, tMax);
+    __m256 t = _mm256_setzero_ps(), invDet = t, v = t, w = t;
+    const int mask = intersectLanes<Lanes8>(r, AnyHitPair{run.lanes()}, tMin, tMax, t, invDet, v, w);
+    if (mask >= 0) return (mask & run.laneMask()) != 0;
+    return anyTriangleHit(r, triangles + run.blocks[0].first, run.count(), tMin, tMax);
 }
 #endif
 
@@ -216,7 +291,7 @@ TRAZO_HD bool triangleLeafBlocks(const TriangleRay& r, const MeshTriangle* trian
 #if TRAZO_HOST_SSE
     using namespace triangle_detail;
     __m128 t, invDet, v, w;
-    const int mask = intersect4(r, TriangleSpan{triangles, count}, tMin, tMax, t, invDet, v, w);
+    const int mask = intersectLanes<Lanes4>(r, TriangleSpan{triangles, count}, tMin, tMax, t, invDet, v, w);
     if (mask >= 0) return (mask & ((1 << count) - 1)) != 0;
 #endif
     return anyTriangleHit(r, triangles, count, tMin, tMax);

@@ -62,14 +62,15 @@ TRAZO_HD bool intersectMesh(const SceneView& scene, const MeshShape& mesh, const
         const TriangleBlock* bestBlock = nullptr;
         auto blockLeaf = [&](uint32_t firstBlock, uint32_t blocks, float& tNearest) __attribute__((always_inline)) {
             bool hit = false;
-            for (const TriangleBlock* b = scene.triangleBlocks.data + firstBlock; blocks > 0; --blocks, ++b) {
+            const TriangleBlock* b = scene.triangleBlocks.data + firstBlock;
+            for (int left = (int)blocks; left > 0; left -= 2, b += 2) {
                 uint32_t which = 0;
-                if (!intersectTriangleBlock(tr, *b, triangles, b->count, tMin, leafLimit(b->first, tNearest),
-                                            bestHit, which))
+                if (!intersectBlockRun(tr, BlockRun{b, left > 1}, triangles, tMin, leafLimit(b->first, tNearest),
+                                       bestHit, which))
                     continue;
                 tNearest = bestHit.t;
                 best = b->first + which;
-                bestBlock = b;
+                bestBlock = b + which / 4;  // the first of a pair is full
                 hit = true;
             }
             return hit;
@@ -109,8 +110,9 @@ TRAZO_HD_HOST_CALL bool meshBlocks(const SceneView& scene, const MeshShape& mesh
 #if TRAZO_HOST_AVX
     if (mesh.anyHit8 && scene.meshNodes8.count > 0) {
         auto blockLeaf = [&](uint32_t firstBlock, uint32_t blocks, float tLimit) __attribute__((always_inline)) {
-            for (const TriangleBlock* b = scene.triangleBlocks.data + firstBlock; blocks > 0; --blocks, ++b)
-                if (triangleBlockBlocks(tr, *b, triangles, 0.0f, tLimit)) return true;
+            const TriangleBlock* b = scene.triangleBlocks.data + firstBlock;
+            for (int left = (int)blocks; left > 0; left -= 2, b += 2)
+                if (blockRunBlocks(tr, BlockRun{b, left > 1}, triangles, 0.0f, tLimit)) return true;
             return false;
         };
         return traverseAny8(scene.meshNodes8.data + mesh.nodeOffset8, ray, 0.0f, tMax, blockLeaf);
