@@ -271,6 +271,22 @@ WideBvhNode8 emptyNode8() {
     return node;
 }
 
+// Gives `node` the binary nodes `lanes` with their references, and queues the interior ones as (binary node,
+// eight-wide node), the first lane's on top, so its subtree is laid out right after the node.
+void setBinaryLanes(const std::vector<BvhNode>& in, const std::vector<uint32_t>& lanes,
+                    const std::vector<uint32_t>& refs, WideBvhNode8& node,
+                    std::vector<std::pair<uint32_t, uint32_t>>& pending) {
+    for (size_t i = 0; i < lanes.size(); ++i) {
+        for (int axis = 0; axis < 3; ++axis) {
+            node.bounds[axis][0][i] = in[lanes[i]].boundsMin[axis];
+            node.bounds[axis][1][i] = in[lanes[i]].boundsMax[axis];
+        }
+        node.child[i] = refs[i];
+    }
+    for (size_t i = lanes.size(); i-- > 0;)
+        if (!bvhIsLeaf(refs[i])) pending.push_back({lanes[i], refs[i]});
+}
+
 // The cost widenBvh minimises, of an eight-wide tree whose leaf lanes name triangles (runs off) or runs of leaves in
 // `leaves` (their triangles packed four to a block): Σ area · kWideNodeCost over nodes, Σ area · blocks ·
 // kWideBlockCost over leaf lanes.
@@ -385,15 +401,7 @@ EightWide widenBinary(const Bvh& bvh, bool runs, uint32_t group) {
                 refs.push_back(bvhLeafRef(in[lane].firstOrChild, in[lane].primCount));
             }
         }
-        for (size_t i = 0; i < lanes.size(); ++i) {
-            for (int axis = 0; axis < 3; ++axis) {
-                made.nodes[at].bounds[axis][0][i] = in[lanes[i]].boundsMin[axis];
-                made.nodes[at].bounds[axis][1][i] = in[lanes[i]].boundsMax[axis];
-            }
-            made.nodes[at].child[i] = refs[i];
-        }
-        for (size_t i = lanes.size(); i-- > 0;)
-            if (!bvhIsLeaf(refs[i])) pending.push_back({lanes[i], refs[i]});
+        setBinaryLanes(in, lanes, refs, made.nodes[at], pending);
     }
     return made;
 }
@@ -414,13 +422,8 @@ EightWide greedyWideTree(const Bvh& bvh, bool runs, uint32_t group) {
         self(in[i].firstOrChild + 1, self, out);
     };
     auto area = [&](uint32_t i) { return Aabb{in[i].boundsMin, in[i].boundsMax}.surfaceArea(); };
-    auto emptyNode = [] {
-        WideBvhNode8 node{};
-        for (int lane = 0; lane < kBvh8Width; ++lane) node.child[lane] = kBvhEmptyLane;
-        return node;
-    };
     EightWide w;
-    w.nodes.push_back(emptyNode());
+    w.nodes.push_back(emptyNode8());
     std::vector<std::pair<uint32_t, uint32_t>> pending{{0u, 0u}};  // (binary node, eight-wide node)
     while (!pending.empty()) {
         const auto [binary, made] = pending.back();
@@ -450,18 +453,10 @@ EightWide greedyWideTree(const Bvh& bvh, bool runs, uint32_t group) {
                 refs.push_back(leafRef(lane));
             } else {
                 refs.push_back((uint32_t)w.nodes.size());
-                w.nodes.push_back(emptyNode());
+                w.nodes.push_back(emptyNode8());
             }
         }
-        for (size_t i = 0; i < lanes.size(); ++i) {
-            for (int axis = 0; axis < 3; ++axis) {
-                w.nodes[made].bounds[axis][0][i] = in[lanes[i]].boundsMin[axis];
-                w.nodes[made].bounds[axis][1][i] = in[lanes[i]].boundsMax[axis];
-            }
-            w.nodes[made].child[i] = refs[i];
-        }
-        for (size_t i = lanes.size(); i-- > 0;)
-            if (!bvhIsLeaf(refs[i])) pending.push_back({lanes[i], refs[i]});
+        setBinaryLanes(in, lanes, refs, w.nodes[made], pending);
     }
     return w;
 }
