@@ -90,7 +90,7 @@ struct NodeChoices {
 };
 
 // Combines the children's costs into the parent's (Ylitie, Karras and Laine 2017, §4.1) and returns its choices.
-// `area`, `mayBeNode` and `mayBeLeaf` are the parent's.
+// `area` and `mayBeNode` are the parent's; a subtree of at most `maxRun` leaves may be one leaf lane.
 uint32_t weighChildren(const SubtreeCost& l, const SubtreeCost& r, double area, bool mayBeNode, uint32_t maxRun,
                        SubtreeCost& out) {
     const double inf = std::numeric_limits<double>::infinity();
