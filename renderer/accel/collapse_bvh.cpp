@@ -212,7 +212,8 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
                 if (!bvhIsLeaf(ref)) return subtree[ref];
                 SubtreeCost leaf;
                 leaf.leaves = 1, leaf.triangles = bvhLeafCount(ref);
-                for (double& c : leaf.cost) c = area(g) * kWideBlockCost;  // ≤ kBvhMaxLeafSize triangles: one block
+                const double oneBlock = area(g) * kWideBlockCost;  // ≤ kBvhMaxLeafSize triangles
+                for (double& c : leaf.cost) c = oneBlock;
                 return leaf;
             }
             LaneGroup left, right;
