@@ -264,10 +264,12 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
         const auto [binary, made] = pending.back();
         pending.pop_back();
         LaneGroup lanes[kBvh8Width];
+        uint32_t laneChoice[kBvh8Width];  // each lane's choices (0 for a leaf): bit 0 says whether it is a node
         int used = 0;
         std::pair<LaneGroup, int> split[2 * kBvh8Width];  // (binary node, the lanes it takes), the leftmost on top
         int size = 0;
         if (isLeaf(binary)) {  // a tree of one leaf
+            laneChoice[used] = 0;
             lanes[used++] = binary;
         } else {
             LaneGroup left, right;
@@ -281,6 +283,7 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
             const uint32_t choice = isLeaf(g) ? 0u : choiceOf(g);
             while (j > 1 && choiceSplit(choice, j) == 0) --j;
             if (j == 1) {
+                laneChoice[used] = choice;
                 lanes[used++] = g;
                 continue;
             }
@@ -293,7 +296,7 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
         uint32_t refs[kBvh8Width];
         for (int i = 0; i < used; ++i) {
             const LaneGroup g = lanes[i];
-            if (!isLeaf(g) && (choiceOf(g) & 1u)) {
+            if (laneChoice[i] & 1u) {
                 refs[i] = (uint32_t)(out.size() - base);
                 out.push_back(emptyWideNode<WideBvhNode8>());
             } else {
