@@ -1,4 +1,5 @@
-// Collapsing a binary BVH into the four-wide nodes the kernels traverse (host).
+// Collapsing a binary BVH into the four-wide nodes every kernel traverses, and regrouping those into the eight-wide
+// nodes the host's AVX kernels traverse meshes over (host).
 #pragma once
 
 #include <algorithm>
