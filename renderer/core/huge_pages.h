@@ -1,6 +1,6 @@
-// Large host allocations on 2 MiB pages (Linux transparent huge pages, asked for per range). A million-triangle
-// mesh's reading, BVH build and upload write ~300 MB of fresh memory: ~75 000 page faults on 4 KiB pages, about
-// half of a scene's creation time on a VM, against ~150 on 2 MiB pages. Embree asks the same for its BVH memory.
+// Large host allocations on 2 MiB pages (Linux transparent huge pages, asked for per range). Reading, building and
+// uploading a million-triangle OBJ scene took 116 000 page faults on 4 KiB pages and 22 000 with its large arrays on
+// 2 MiB pages, 1.7 s against 1.0 s on this 2-core VM (README). Embree asks the same for its BVH memory.
 #pragma once
 
 #include <cstddef>
