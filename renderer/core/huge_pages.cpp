@@ -30,7 +30,8 @@ bool adviseHugePages(void* data, std::size_t bytes) {
 // Every program linking the renderer takes these two operator new (the library member defining them is linked
 // where new is used, ahead of libstdc++'s): malloc or aligned_alloc, as libstdc++'s, and then the advice for large
 // blocks, before anything touches them. libstdc++'s array and nothrow forms call these, and its deletes free. Not
-// under AddressSanitizer, whose own operator new tracks allocations.
+// under AddressSanitizer, whose own operator new tracks allocations; valgrind's memcheck replaces these too with
+// --soname-synonyms=somalloc=NONE (else it reports each delete of them as mismatched with malloc).
 #if !defined(__SANITIZE_ADDRESS__)
 namespace {
 
