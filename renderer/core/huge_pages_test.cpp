@@ -43,8 +43,9 @@ std::string vmFlagsAt(const void* address) {
 }
 bool advised(const void* address) { return vmFlagsAt(address).find(" hg ") != std::string::npos; }
 
-// 8 MiB of fresh anonymous memory, 2 MiB-aligned, unmapped at the end.
+// At least 8 MiB of fresh anonymous memory from `base`, 2 MiB-aligned, unmapped at the end.
 struct Mapping {
+    char* raw = nullptr;
     char* base = nullptr;
     Mapping() {
         void* p = mmap(nullptr, 5 * kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -55,7 +56,6 @@ struct Mapping {
     ~Mapping() {
         if (raw) munmap(raw, 5 * kHugePage);
     }
-    char* raw = nullptr;
 };
 
 TEST(HugePages, AdviceCoversExactlyTheWholeHugePagesInsideTheRange) {
