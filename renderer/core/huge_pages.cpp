@@ -13,7 +13,7 @@ namespace trazo {
 
 bool adviseHugePages(void* data, std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-    constexpr std::uintptr_t kHugePage = std::uintptr_t(2) << 20;
+    constexpr std::uintptr_t kHugePage = kHugePageBytes;
     const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(data);
     const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
     const std::uintptr_t last = (begin + bytes) & ~(kHugePage - 1);
@@ -39,7 +39,7 @@ template <class Allocate>
 void* allocateAdvised(std::size_t bytes, Allocate&& allocate) {
     for (;;) {
         if (void* p = allocate()) {
-            if (bytes >= trazo::kHugePageAdviceBytes) trazo::adviseHugePages(p, bytes);
+            trazo::adviseLargeAllocation(p, bytes);
             return p;
         }
         std::new_handler handler = std::get_new_handler();

@@ -21,7 +21,7 @@ namespace trazo {
 namespace {
 
 #if defined(__linux__)
-constexpr std::uintptr_t kHugePage = std::uintptr_t(2) << 20;
+constexpr std::uintptr_t kHugePage = kHugePageBytes;
 
 // The VmFlags of the mapping holding `address` ("" if none does).
 std::string vmFlagsAt(const void* address) {

@@ -316,7 +316,7 @@ struct PageAllocator {
     T* allocate(size_t n) {
         void* p = ::mmap(nullptr, n * sizeof(T), PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         if (p == MAP_FAILED) throw std::bad_alloc();
-        if (n * sizeof(T) >= kHugePageAdviceBytes) adviseHugePages(p, n * sizeof(T));  // as operator new does
+        adviseLargeAllocation(p, n * sizeof(T));
         return static_cast<T*>(p);
     }
     void deallocate(T* p, size_t n) { ::munmap(p, n * sizeof(T)); }
