@@ -19,3 +19,11 @@
 #else
 #define TRAZO_HOST_AVX 0
 #endif
+
+// TRAZO_HOST_AVX512: host code compiled for AVX-512 (the CPU backend's AVX-512 kernels): a mesh leaf's run of three
+// or four blocks is then tested in one sixteen-lane test (geometry/intersect_triangle_leaf.h).
+#if TRAZO_HOST_AVX && defined(__AVX512F__)
+#define TRAZO_HOST_AVX512 1
+#else
+#define TRAZO_HOST_AVX512 0
+#endif

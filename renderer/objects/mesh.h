@@ -61,18 +61,25 @@ TRAZO_HD bool intersectMesh(const SceneView& scene, const MeshShape& mesh, const
         // Inlined: in the large tile units GCC would call it out of line from the traversal.
         const TriangleBlock* bestBlock = nullptr;
         auto blockLeaf = [&](uint32_t firstBlock, uint32_t blocks, float& tNearest) __attribute__((always_inline)) {
-            bool hit = false;
             const TriangleBlock* b = scene.triangleBlocks.data + firstBlock;
-            for (int left = (int)blocks; left > 0; left -= 2, b += 2) {
-                uint32_t which = 0;
-                if (!intersectBlockRun(tr, BlockRun{b, left > 1}, triangles, tMin, leafLimit(b->first, tNearest),
-                                       bestHit, which))
-                    continue;
+            uint32_t which = 0;
+            auto found = [&](const TriangleBlock* run) {  // bestHit is now the run's hit `which`
                 tNearest = bestHit.t;
-                best = b->first + which;
-                bestBlock = b + which / 4;  // the first of a pair is full
-                hit = true;
-            }
+                best = run->first + which;
+                bestBlock = run + which / 4;  // a run's blocks but its last are full
+                return true;
+            };
+#if TRAZO_HOST_AVX512
+            if (blocks > 2)
+                return intersectBlockQuad(tr, triangle_detail::BlockQuad{b, blocks == 4}, triangles, tMin,
+                                          leafLimit(b->first, tNearest), bestHit, which) &&
+                       found(b);
+#endif
+            bool hit = false;
+            for (int left = (int)blocks; left > 0; left -= 2, b += 2)
+                if (intersectBlockRun(tr, BlockRun{b, left > 1}, triangles, tMin, leafLimit(b->first, tNearest),
+                                      bestHit, which))
+                    hit = found(b);
             return hit;
         };
         if (!traverseClosest8(scene.meshNodes8.data + mesh.nodeOffset8, ray, tMin, tMax, stack, blockLeaf))

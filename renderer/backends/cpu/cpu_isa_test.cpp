@@ -188,12 +188,19 @@ TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
         viewEightWide(views[k + 1], meshes8[k]);
         names[k + 1] = " eight-wide, runs of up to " + std::to_string(groups[k]) + " leaves" +
                        (anyHit8 ? ", shadow rays eight-wide too" : "");
-        size_t runBlocks = 0;  // blocks in runs of more than one
+        // Blocks in runs of more than one, and runs of three or four (one sixteen-lane test where AVX-512 runs).
+        size_t runBlocks = 0, longRuns = 0;
         for (const WideBvhNode8& node : meshes8[k].nodes)
             for (uint32_t ref : node.child)
-                if (ref != kBvhEmptyLane && bvhIsLeaf(ref) && bvhLeafCount(ref) > 1) runBlocks += bvhLeafCount(ref);
+                if (ref != kBvhEmptyLane && bvhIsLeaf(ref) && bvhLeafCount(ref) > 1) {
+                    runBlocks += bvhLeafCount(ref);
+                    longRuns += bvhLeafCount(ref) > 2;
+                }
         if (groups[k] == 1) EXPECT_EQ(runBlocks, 0u);
         else EXPECT_GT(runBlocks, meshes8[k].blocks.size() / 10) << "runs of " << groups[k];
+        if (groups[k] == 4) {
+            EXPECT_GT(longRuns, 20u);
+        }
     }
 
     CounterUniform u(3);
