@@ -203,8 +203,8 @@ inline __m512 vertexLanes(const BlockQuad& quad, int k, int axis) {
 // intersectSheared for four, eight or sixteen triangles (a TriangleSpan; a BlockPair where host code is compiled
 // for AVX2; a BlockQuad for AVX-512). Returns the mask of lanes hit within (tMin, tMax), with t and the reciprocal
 // determinant per lane, or −1 when a lane has an edge function of exactly zero: the caller then falls back to the
-// scalar test, which re-evaluates it in double. A span is transposed here rather than by the caller, so its vertices stay in
-// registers (any-hit traversal: 3-4 % fewer rays a second the other way, bvh_bench).
+// scalar test, which re-evaluates it in double. A span is transposed here rather than by the caller, so its
+// vertices stay in registers (any-hit traversal: 3-4 % fewer rays a second the other way, bvh_bench).
 template <class L, int KZ, class Leaf>
 inline int intersectLanesAlong(const TriangleRay& r, const Leaf& leaf, float tMin, float tMax, typename L::V& t,
                                typename L::V& invDet, typename L::V& v, typename L::V& w) {
