@@ -259,8 +259,8 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
     const bench::EmbreeScene embreeN(scene.triangles, 0);
     std::printf("Embree build (default quality): %.1f ms (1 thread), %.1f ms (all threads)\n",
                 embree1.buildSeconds() * 1e3, embreeN.buildSeconds() * 1e3);
-    std::printf("%-8s %9s %8s | %12s %12s | %12s %13s %10s\n", "rays", "count", "hit %", "Trazo 1T", "Trazo NT",
-                "Embree 1T", "Trazo/Embree", "agreement");
+    std::printf("%-8s %9s %8s | %12s %12s | %12s %12s | %8s %8s %10s\n", "rays", "count", "hit %", "Trazo 1T",
+                "Trazo NT", "Embree 1T", "Embree NT", "ratio 1T", "ratio NT", "agreement");
 #else
     std::printf("%-8s %9s %8s | %12s %12s\n", "rays", "count", "hit %", "Trazo 1T", "Trazo NT");
 #endif
@@ -279,14 +279,17 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
             scene.answer(&rays[begin], end - begin, true, &otherResult[begin]);
         };
 #if TRAZO_HAVE_EMBREE
-        double te = 1e30;
+        double te = 1e30, teN = 1e30;
         std::vector<float> theirs(rays.size());
-        auto traceEmbree = [&](size_t begin, size_t end) {
-            for (size_t i = begin; i < end; ++i) {
-                const RayQuery& q = rays[i];
-                theirs[i] = k.shadow ? (float)embree1.occluded(q.ray, 0.0f, q.tMax) : embree1.intersect(q.ray, 0.0f, q.tMax);
-            }
+        auto traceEmbreeOn = [&](const bench::EmbreeScene& embree) {
+            return [&, e = &embree](size_t begin, size_t end) {
+                for (size_t i = begin; i < end; ++i) {
+                    const RayQuery& q = rays[i];
+                    theirs[i] = k.shadow ? (float)e->occluded(q.ray, 0.0f, q.tMax) : e->intersect(q.ray, 0.0f, q.tMax);
+                }
+            };
         };
+        const auto traceEmbree = traceEmbreeOn(embree1), traceEmbreeN = traceEmbreeOn(embreeN);
 #endif
         for (int r = 0; r < opt.repeat; ++r) {
             t1 = std::min(t1, parallelFor(rays.size(), 1, trace));
@@ -299,7 +302,12 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
                 scene.setAnyHit8(!scene.anyHit8());
             }
         }
-        for (int r = 0; r < opt.repeat; ++r) tN = std::min(tN, parallelFor(rays.size(), threads, trace));
+        for (int r = 0; r < opt.repeat; ++r) {
+            tN = std::min(tN, parallelFor(rays.size(), threads, trace));
+#if TRAZO_HAVE_EMBREE
+            teN = std::min(teN, parallelFor(rays.size(), threads, traceEmbreeN));
+#endif
+        }
         size_t hits = 0;
         for (float r : result) hits += k.shadow ? r != 0.0f : std::isfinite(r);
         const double mr1 = rays.size() / t1 * 1e-6, mrN = rays.size() / tN * 1e-6;
@@ -307,9 +315,10 @@ void benchScene(const char* name, std::vector<Vec3> triangles, const BenchOption
         size_t agree = 0;
         for (size_t i = 0; i < rays.size(); ++i)
             agree += k.shadow ? (result[i] != 0.0f) == (theirs[i] != 0.0f) : std::isfinite(result[i]) == std::isfinite(theirs[i]);
-        const double mre = rays.size() / te * 1e-6;
-        std::printf("%-8s %9zu %7.2f%% | %7.2f Mr/s %7.2f Mr/s | %7.2f Mr/s %12.2fx %9.4f%%\n", k.name, rays.size(),
-                    100.0 * hits / rays.size(), mr1, mrN, mre, mr1 / mre, 100.0 * agree / rays.size());
+        const double mre = rays.size() / te * 1e-6, mreN = rays.size() / teN * 1e-6;
+        std::printf("%-8s %9zu %7.2f%% | %7.2f Mr/s %7.2f Mr/s | %7.2f Mr/s %7.2f Mr/s | %7.2fx %7.2fx %9.4f%%\n", k.name,
+                    rays.size(), 100.0 * hits / rays.size(), mr1, mrN, mre, mreN, mr1 / mre, mrN / mreN,
+                    100.0 * agree / rays.size());
 #else
         std::printf("%-8s %9zu %7.2f%% | %7.2f Mr/s %7.2f Mr/s\n", k.name, rays.size(), 100.0 * hits / rays.size(), mr1, mrN);
 #endif
