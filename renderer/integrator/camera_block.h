@@ -107,8 +107,9 @@ inline void indirectOfPoints(const SceneView& scene, BlockPoints& b, uint64_t at
         const ShadingPoint& sp = b.points[i];
         views[i] = orenNayarView(sp.n, sp.v, b.materials[i].roughness);
         sum[i] = Vec3(0.0f);
+        const ConeFrame about = coneFrame(sp.n);
         for (uint32_t j = 0; j < directions[i].size; ++j) {
-            const Vec3 w = indirectDirection(sp, directions[i].stratum(j), q, streams[i]);
+            const Vec3 w = indirectDirection(about, directions[i].stratum(j), q, streams[i]);
             if (dot(w, sp.ng) <= 0.0f) continue;  // below the geometric surface: contributes 0
             ++rays;
             origins.ox[used] = sp.above.x, origins.oy[used] = sp.above.y, origins.oz[used] = sp.above.z;

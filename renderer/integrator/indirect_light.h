@@ -35,10 +35,14 @@ TRAZO_HD Vec3 lightArrivingFrom(const SceneView& scene, const Ray& ray, const Su
 }
 
 // The direction of stratum k of the q θ-bins × 2q φ-bins about sp.n, jittered by two draws of rng (θ first).
-TRAZO_HD Vec3 indirectDirection(const ShadingPoint& sp, uint32_t k, uint32_t q, SampleStream& rng) {
+// about: coneFrame(sp.n), made once for all of a point's directions.
+TRAZO_HD Vec3 indirectDirection(const ConeFrame& about, uint32_t k, uint32_t q, SampleStream& rng) {
     const float theta = (float(k % q) + rng.next()) / float(q) * 1.57079632679f;
     const float phi = (float(k / q) + rng.next()) / float(2 * q) * 6.28318530718f;
-    return directionInCone(sp.n, theta, phi);
+    return directionInCone(about, theta, phi);
+}
+TRAZO_HD Vec3 indirectDirection(const ShadingPoint& sp, uint32_t k, uint32_t q, SampleStream& rng) {
+    return indirectDirection(coneFrame(sp.n), k, q, rng);
 }
 
 // indirectLight's sum over its block of directions (before the ColorBleeding / size factor), one ray at a time.
@@ -121,6 +125,7 @@ inline Vec3 indirectLightTogether(const SceneView& scene, const ShadingPoint& sp
     PerRay<ShadingPoint> points;     // Q, where atObject
     PerRay<MaterialData> materials;  // Q's, where atObject
     PerRay<Vec3> fromQ;
+    const ConeFrame about = coneFrame(sp.n);
     Vec3 sum(0.0f);
     for (uint32_t start = 0; start < directions.size; start += kPacketRays) {
         const uint32_t count = directions.size - start < kPacketRays ? directions.size - start : kPacketRays;
@@ -128,7 +133,7 @@ inline Vec3 indirectLightTogether(const SceneView& scene, const ShadingPoint& sp
         for (uint32_t i = 0; i < (uint32_t)kPacketRays; ++i) {
             Vec3 w(0.0f, 0.0f, 1.0f);  // lanes past count are never traced
             if (i < count) {
-                w = indirectDirection(sp, directions.stratum(start + i), scene.settings.indirectQuality, rng);
+                w = indirectDirection(about, directions.stratum(start + i), scene.settings.indirectQuality, rng);
                 if (dot(w, sp.ng) > 0.0f) active |= 1ull << i;  // below the geometric surface: contributes 0
             }
             packet.dx[i] = w.x;

@@ -17,12 +17,25 @@ TRAZO_HD bool refractDirection(Vec3 d, Vec3 n, float eta, Vec3& out) {
     return true;
 }
 
-// A direction at polar angle theta and azimuth phi about the unit axis.
-TRAZO_HD Vec3 directionInCone(Vec3 axis, float theta, float phi) {
+// The tangent frame directionInCone turns about `axis`: made once for many directions about the same axis.
+struct ConeFrame {
+    Vec3 axis, t1, t2;
+};
+
+TRAZO_HD ConeFrame coneFrame(Vec3 axis) {
     const Vec3 t1 = anyOrthonormal(axis);
-    const Vec3 t2 = cross(axis, t1);
+    return ConeFrame{axis, t1, cross(axis, t1)};
+}
+
+// A direction at polar angle theta and azimuth phi about the frame's unit axis.
+TRAZO_HD Vec3 directionInCone(const ConeFrame& f, float theta, float phi) {
     const float sinTheta = sinf(theta);
-    return normalize(axis * cosf(theta) + (t1 * cosf(phi) + t2 * sinf(phi)) * sinTheta);
+    return normalize(f.axis * cosf(theta) + (f.t1 * cosf(phi) + f.t2 * sinf(phi)) * sinTheta);
+}
+
+// The same about a unit axis.
+TRAZO_HD Vec3 directionInCone(Vec3 axis, float theta, float phi) {
+    return directionInCone(coneFrame(axis), theta, phi);
 }
 
 }  // namespace trazo
