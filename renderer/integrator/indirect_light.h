@@ -50,12 +50,15 @@ template <FeatureMask F>
 TRAZO_HD Vec3 indirectLightOneByOne(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
                                     const StrataBlock& directions, const StrataKey& atQ, const StrataBlocks& blocks,
                                     SampleStream& rng, uint32_t& rays) {
-#if !TRAZO_DEVICE_PATHS
-    const OrenNayarView view = orenNayarView(sp.n, sp.v, m.roughness);  // the device: per direction, as PointBrdf
+#if !TRAZO_DEVICE_PATHS  // the device: both per direction (as PointBrdf), fewer live registers
+    const OrenNayarView view = orenNayarView(sp.n, sp.v, m.roughness);
+    const ConeFrame about = coneFrame(sp.n);
+#else
+    const ShadingPoint& about = sp;
 #endif
     Vec3 sum(0.0f);
     for (uint32_t j = 0; j < directions.size; ++j) {
-        const Vec3 w = indirectDirection(sp, directions.stratum(j), scene.settings.indirectQuality, rng);
+        const Vec3 w = indirectDirection(about, directions.stratum(j), scene.settings.indirectQuality, rng);
         if (dot(w, sp.ng) <= 0.0f) continue;  // below the geometric surface: contributes 0
         const Ray ray{sp.rayOrigin(w), w};
         ++rays;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/vec3.h"
+#include "integrator/scattering.h"
 
 namespace trazo {
 
@@ -22,8 +23,8 @@ TRAZO_HD Vec3 sampleIsotropic(float u1, float u2) {
 TRAZO_HD Vec3 sampleCosineAbout(Vec3 n, float u1, float u2) {
     const float sinTheta = sqrtf(u1), cosTheta = sqrtf(1.0f - u1);
     const float phi = 6.28318530717958648f * u2;
-    const Vec3 t1 = anyOrthonormal(n), t2 = cross(n, t1);
-    return t1 * (sinTheta * cosf(phi)) + t2 * (sinTheta * sinf(phi)) + n * cosTheta;
+    const ConeFrame f = coneFrame(n);
+    return f.t1 * (sinTheta * cosf(phi)) + f.t2 * (sinTheta * sinf(phi)) + n * cosTheta;
 }
 
 // A distance with pdf e^(−s/d)/d (mean d, the free path of a medium of extinction 1/d): −d·ln(1 − u), through
