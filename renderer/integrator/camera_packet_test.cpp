@@ -2,8 +2,8 @@
 // indirect light: shadeBlock is renderSample given the same hits, bit for bit (and, without indirect light, one value
 // in every pass), and the CPU backend's packet tile renderer, which shades such blocks together, adds what the
 // one-pixel-at-a-time tile renderer adds, at every ISA width this CPU runs. Random scenes of every object kind, two
-// point lights, matte, glossy, emitting and half-transparent materials, objects twice at one place (ties),
-// IndirectQuality 1 to 6 with blocks of 1 direction to the whole grid.
+// point lights, matte, glossy, specular-only, emitting and half-transparent materials, objects twice at one place
+// (ties), IndirectQuality 1 to 6 with blocks of 1 direction to the whole grid.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -24,10 +24,12 @@ constexpr const char* kExtras =
     "PointLight\n{\n    Position -3 -2 6\n    Color 0.3 0.3 0.4\n}\n"
     "Material\n{\n    Name glossy\n    DiffuseColor 0.2 0.5 0.7\n    SpecularColor 0.6 0.6 0.6\n    Roughness 0.3\n}\n"
     "Material\n{\n    Name smooth\n    DiffuseColor 0.8 0.1 0.1\n    Roughness 0\n}\n"
+    "Material\n{\n    Name chrome\n    DiffuseColor 0 0 0\n    SpecularColor 0.7 0.7 0.7\n    Roughness 0.2\n}\n"
     "Material\n{\n    Name lamp\n    DiffuseColor 0 0 0\n    EmissiveColor 0.9 0.9 0.2\n}\n"
     "Material\n{\n    Name veil\n    DiffuseColor 0.5 0.5 0.5\n    Opacity 0.5\n    RefractionIndex 1\n}\n"
     "Sphere\n{\n    Material glossy\n    Center -2 1 2\n    Radius 0.7\n}\n"
     "Sphere\n{\n    Material glossy\n    Center -2 1 2\n    Radius 0.7\n}\n"
+    "Sphere\n{\n    Material chrome\n    Center 0.5 -1.2 1.2\n    Radius 0.6\n}\n"
     "Sphere\n{\n    Material lamp\n    Center 2.5 2.5 1\n    Radius 0.5\n}\n"
     "Box\n{\n    Material smooth\n    Scale 1 0.5 2\n    Translation 2 -1 1\n}\n"
     "Box\n{\n    Material smooth\n    Scale 1 0.5 2\n    Translation 2 -1 1\n}\n"

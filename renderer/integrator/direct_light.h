@@ -193,11 +193,112 @@ inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, c
     return lightSum;
 }
 
+// Host: up to kPacketRays shading points and their materials, structure of arrays, so that each SIMD lane can
+// shade its own point (directPointLightsTogether).
+struct PointLanes {
+    alignas(64) float px[kPacketRays], py[kPacketRays], pz[kPacketRays];  // p
+    alignas(64) float gx[kPacketRays], gy[kPacketRays], gz[kPacketRays];  // ng
+    alignas(64) float nx[kPacketRays], ny[kPacketRays], nz[kPacketRays];  // n
+    alignas(64) float vx[kPacketRays], vy[kPacketRays], vz[kPacketRays];  // v
+    alignas(64) float ax[kPacketRays], ay[kPacketRays], az[kPacketRays];  // above
+    alignas(64) float dr[kPacketRays], dg[kPacketRays], db[kPacketRays];  // the material's diffuse colour
+    alignas(64) float sr[kPacketRays], sg[kPacketRays], sb[kPacketRays];  // its specular colour
+    alignas(64) float roughness[kPacketRays];
+
+    // Lanes [0, used): the points of `at`, zeros elsewhere (never shaded, but computed in their lanes).
+    void gather(const ShadingPoint* points, const MaterialData* materials, uint64_t at, int used) {
+        for (int i = 0; i < used; ++i) {
+            if (!(at >> i & 1u)) {
+                px[i] = py[i] = pz[i] = gx[i] = gy[i] = gz[i] = nx[i] = ny[i] = nz[i] = 0.0f;
+                vx[i] = vy[i] = vz[i] = ax[i] = ay[i] = az[i] = 0.0f;
+                dr[i] = dg[i] = db[i] = sr[i] = sg[i] = sb[i] = roughness[i] = 0.0f;
+                continue;
+            }
+            const ShadingPoint& sp = points[i];
+            const MaterialData& m = materials[i];
+            px[i] = sp.p.x, py[i] = sp.p.y, pz[i] = sp.p.z;
+            gx[i] = sp.ng.x, gy[i] = sp.ng.y, gz[i] = sp.ng.z;
+            nx[i] = sp.n.x, ny[i] = sp.n.y, nz[i] = sp.n.z;
+            vx[i] = sp.v.x, vy[i] = sp.v.y, vz[i] = sp.v.z;
+            ax[i] = sp.above.x, ay[i] = sp.above.y, az[i] = sp.above.z;
+            dr[i] = m.diffuse.x, dg[i] = m.diffuse.y, db[i] = m.diffuse.z;
+            sr[i] = m.specular.x, sg[i] = m.specular.y, sb[i] = m.specular.z;
+            roughness[i] = m.roughness;
+        }
+    }
+    static packet_detail::V3 lanes(const float* x, const float* y, const float* z, int o) {
+        return {packet_detail::load(x + o), packet_detail::load(y + o), packet_detail::load(z + o)};
+    }
+};
+
+// Host: PointBrdf(points[i], materials[i]).eval(l) in lane i of the group at lane offset o, for the lanes of
+// `lanes` (bit k: lane o + k): orenNayarView, evalOrenNayar and evalCookTorrance operation for operation, each
+// lane with its own point and material, a black lobe adding nothing; expf lane by lane (libm's, as the scalar
+// code calls it).
+inline packet_detail::V3 evalPointBrdfLanes(const PointLanes& q, int o, const packet_detail::V3& l, uint64_t lanes) {
+    using namespace packet_detail;
+    const V3 n = PointLanes::lanes(q.nx, q.ny, q.nz, o), v = PointLanes::lanes(q.vx, q.vy, q.vz, o);
+    const V3 kd = PointLanes::lanes(q.dr, q.dg, q.db, o), ks = PointLanes::lanes(q.sr, q.sg, q.sb, o);
+    const LaneF sigma = load(q.roughness + o);
+    const LaneF zero = splat(0.0f), one = splat(1.0f);
+    // orenNayarView
+    const LaneF s2 = sigma * sigma;
+    const LaneF a = 1.0f - 0.5f * s2 / (s2 + 0.33f);
+    const LaneF b = 0.45f * s2 / (s2 + 0.09f);
+    const LaneF nv = dot(n, v);
+    const LaneF cosV = nv < 1.0f ? nv : one;
+    const LaneF sin2 = 1.0f - cosV * cosV;
+    const LaneF sinV = sqrt(0.0f > sin2 ? zero : sin2);
+    const V3 vt0 = {v.x - n.x * cosV, v.y - n.y * cosV, v.z - n.z * cosV};
+    const LaneF vt2 = dot(vt0, vt0);
+    const LaneF invVt = 1.0f / sqrt(vt2);
+    const LaneI hasVt = vt2 > 0.0f;
+    const V3 vt = {hasVt ? vt0.x * invVt : zero, hasVt ? vt0.y * invVt : zero, hasVt ? vt0.z * invVt : zero};
+    // evalOrenNayar
+    const LaneF nl = dot(n, l);
+    const LaneF cosL = nl < 1.0f ? nl : one;
+    const LaneF lvt = dot(l, vt);
+    const LaneF azimuth = 0.0f > lvt ? zero : lvt;
+    const LaneF slope = cosL <= cosV ? (cosL / cosV) * sinV : sinV;
+    const LaneF on = b == 0.0f ? cosL * a : cosL * a + b * azimuth * slope;
+    const LaneI diffuse = ~((kd.x == 0.0f) & (kd.y == 0.0f) & (kd.z == 0.0f));
+    V3 f = {diffuse ? kd.x * on : zero, diffuse ? kd.y * on : zero, diffuse ? kd.z * on : zero};
+    const LaneI specular = ~((ks.x == 0.0f) & (ks.y == 0.0f) & (ks.z == 0.0f));
+    const uint64_t specularLanes = lanes & bits(specular);
+    if (!specularLanes) return f;
+    // evalCookTorrance
+    const LaneF m = sigma > 0.01f ? sigma : splat(0.01f);
+    const V3 sum = {l.x + v.x, l.y + v.y, l.z + v.z};
+    const LaneF inv = 1.0f / sqrt(dot(sum, sum));
+    const V3 h = {sum.x * inv, sum.y * inv, sum.z * inv};
+    const LaneF nh0 = dot(n, h);
+    const LaneF nh = nh0 < 1.0f ? nh0 : one;
+    const LaneF vh = dot(v, h);
+    const LaneI none = (nh <= 0.0f) | (vh <= 0.0f);
+    const LaneF nh2 = nh * nh;
+    const LaneF tan2 = (1.0f - nh2) / nh2;
+    const LaneF m2 = m * m;
+    const LaneF exponent = -tan2 / m2;
+    LaneF e = zero;
+    for (uint64_t left = specularLanes & ~bits(none); left; left &= left - 1) {
+        const int i = __builtin_ctzll(left);
+        e[i] = expf(exponent[i]);
+    }
+    const LaneF piD = e / (m2 * nh2 * nh2);
+    const LaneF nearer = nv < nl ? nv : nl;
+    const LaneF g2 = 2.0f * nh * nearer / vh;
+    const LaneF gTerm = 1.0f < g2 ? one : g2;
+    const LaneF ct = none ? zero : piD * gTerm / (4.0f * nv);
+    return {specular ? f.x + ks.x * ct : f.x, specular ? f.y + ks.y * ct : f.y, specular ? f.z + ks.z * ct : f.z};
+}
+
 // Host: directLight<F> for F without area lights (point lights only) at each point of `at` (bit i: points[i]
-// with materials[i]) into out[i]: for each light in turn, the points' shadow rays traced together, each from
-// its own origin (occludedPacket). The same rays and sums, bit for bit.
+// with materials[i]) into out[i]: for each light in turn, the points' shadow rays aimed in SIMD lanes (as
+// aimShadowRay), traced together, each from its own origin (occludedPacket), and the BRDF of the visible ones
+// in lanes (evalPointBrdfLanes). The same rays and sums, bit for bit.
 inline void directPointLightsTogether(const SceneView& scene, const ShadingPoint* points,
                                       const MaterialData* materials, uint64_t at, Vec3* out, uint32_t& rays) {
+    using namespace packet_detail;
     uint64_t reflecting = 0;
     for (uint64_t left = at; left; left &= left - 1) {
         const int i = __builtin_ctzll(left);
@@ -205,35 +306,64 @@ inline void directPointLightsTogether(const SceneView& scene, const ShadingPoint
         if (reflectsLight(points[i], materials[i])) reflecting |= 1ull << i;
     }
     if (!reflecting) return;
+    const int lanesUsed = (64 - __builtin_clzll(reflecting) + kLanes - 1) / kLanes * kLanes;
+    PointLanes q;
+    q.gather(points, materials, reflecting, lanesUsed);
     RayPacket packet;
     RayOrigins origins;
-    const int lanesUsed = (64 - __builtin_clzll(reflecting) + packet_detail::kLanes - 1) / packet_detail::kLanes *
-                          packet_detail::kLanes;
     for (int i = lanesUsed; i < kPacketRays; ++i) {  // never traced, but read whole by the packet's set-up
         origins.ox[i] = origins.oy[i] = origins.oz[i] = 0.0f;
         packet.dx[i] = packet.dy[i] = packet.tMax[i] = 0.0f;
         packet.dz[i] = 1.0f;
     }
+    alignas(64) float fx[kPacketRays], fy[kPacketRays], fz[kPacketRays];
+    const LaneF zero = splat(0.0f);
     for (uint32_t k = 0; k < scene.pointLights.count; ++k) {
         const PointLightData& light = scene.pointLights[k];
+        const Vec3 x = light.position;
         uint64_t aimed = 0;
-        for (int i = 0; i < lanesUsed; ++i) {
-            Vec3 l(0.0f, 0.0f, 1.0f), origin(0.0f);  // lanes not aimed are never traced
-            float tMax = 0.0f;
-            if ((reflecting >> i & 1u) && aimShadowRay(points[i], light.position, l, origin)) {
-                tMax = length(light.position - origin);
-                aimed |= 1ull << i;
+        for (int o = 0; o < lanesUsed; o += kLanes) {  // aimShadowRay: l, and the origin above the surface
+            const V3 p = PointLanes::lanes(q.px, q.py, q.pz, o), n = PointLanes::lanes(q.nx, q.ny, q.nz, o);
+            const V3 toLight = {x.x - p.x, x.y - p.y, x.z - p.z};
+            const LaneF dist = sqrt(dot(toLight, toLight));
+            const LaneF inv = 1.0f / dist;
+            const V3 l = {toLight.x * inv, toLight.y * inv, toLight.z * inv};
+            const uint64_t lanes = (reflecting >> o & kGroupBits) & bits((dist > 0.0f) & ~(dot(n, l) <= 0.0f));
+            LaneI laneAimed;
+            for (int i = 0; i < kLanes; ++i) laneAimed[i] = lanes >> i & 1u ? -1 : 0;
+            const LaneF dx = laneAimed ? l.x : zero, dy = laneAimed ? l.y : zero, dz = laneAimed ? l.z : splat(1.0f);
+            const LaneF ox = laneAimed ? load(q.ax + o) : zero, oy = laneAimed ? load(q.ay + o) : zero,
+                        oz = laneAimed ? load(q.az + o) : zero;
+            std::memcpy(packet.dx + o, &dx, sizeof dx);
+            std::memcpy(packet.dy + o, &dy, sizeof dy);
+            std::memcpy(packet.dz + o, &dz, sizeof dz);
+            std::memcpy(origins.ox + o, &ox, sizeof ox);
+            std::memcpy(origins.oy + o, &oy, sizeof oy);
+            std::memcpy(origins.oz + o, &oz, sizeof oz);
+            const V3 ng = PointLanes::lanes(q.gx, q.gy, q.gz, o);
+            for (uint64_t down = lanes & bits(dot(l, ng) < 0.0f); down; down &= down - 1) {  // rayOrigin below
+                const int i = o + __builtin_ctzll(down);
+                const Vec3 origin = points[i].rayOrigin(Vec3(packet.dx[i], packet.dy[i], packet.dz[i]));
+                origins.ox[i] = origin.x, origins.oy[i] = origin.y, origins.oz[i] = origin.z;
             }
-            origins.ox[i] = origin.x, origins.oy[i] = origin.y, origins.oz[i] = origin.z;
-            packet.dx[i] = l.x, packet.dy[i] = l.y, packet.dz[i] = l.z;
-            packet.tMax[i] = tMax;
+            const V3 toEnd = {x.x - load(origins.ox + o), x.y - load(origins.oy + o), x.z - load(origins.oz + o)};
+            const LaneF tMax = laneAimed ? sqrt(dot(toEnd, toEnd)) : zero;
+            std::memcpy(packet.tMax + o, &tMax, sizeof tMax);
+            aimed |= lanes << o;
         }
         rays += (uint32_t)__builtin_popcountll(aimed);
         const uint64_t visible = aimed & ~occludedPacket(scene, origins, packet, aimed);
+        for (int o = 0; o < lanesUsed; o += kLanes) {
+            const uint64_t lanes = visible >> o & kGroupBits;
+            if (!lanes) continue;
+            const V3 f = evalPointBrdfLanes(q, o, PointLanes::lanes(packet.dx, packet.dy, packet.dz, o), lanes);
+            std::memcpy(fx + o, &f.x, sizeof f.x);
+            std::memcpy(fy + o, &f.y, sizeof f.y);
+            std::memcpy(fz + o, &f.z, sizeof f.z);
+        }
         for (uint64_t left = reflecting; left; left &= left - 1) {
             const int i = __builtin_ctzll(left);
-            const Vec3 l(packet.dx[i], packet.dy[i], packet.dz[i]);
-            out[i] += visible >> i & 1u ? light.color * PointBrdf(points[i], materials[i]).eval(l) : Vec3(0.0f);
+            out[i] += visible >> i & 1u ? light.color * Vec3(fx[i], fy[i], fz[i]) : Vec3(0.0f);
         }
     }
 }

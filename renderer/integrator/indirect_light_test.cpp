@@ -1,11 +1,12 @@
 // Tests (host) that indirect light with its directions traced as packets (indirectLightTogether) is the
 // one-ray-at-a-time loop (indirectLightOneByOne) bit for bit: the sum, the random numbers drawn and the rays
 // counted. Random scenes of spheres, boxes, cylinders, meshes and CSG solids (the last two traced again ray by
-// ray inside the packet code), point lights, objects twice at one place (ties), shading points seen from a
-// camera, block sizes from 1 direction to more than one packet.
+// ray inside the packet code), point lights, matte, glossy, specular-only and textured materials, objects twice at
+// one place (ties), shading points seen from a camera, block sizes from 1 direction to more than one packet.
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <string>
 
 #include "integrator/indirect_light.h"
 #include "integrator/packet_test_scenes.h"
@@ -17,13 +18,25 @@
 namespace trazo {
 namespace {
 
-constexpr const char* kExtras =
-    "PointLight\n{\n    Position 1 6 5\n    Color 0.9 0.8 0.7\n}\n"
-    "PointLight\n{\n    Position -3 -2 6\n    Color 0.3 0.3 0.4\n}\n"
-    "Sphere\n{\n    Material white\n    Center -2 1 2\n    Radius 0.7\n}\n"
-    "Sphere\n{\n    Material white\n    Center -2 1 2\n    Radius 0.7\n}\n"
-    "Box\n{\n    Material white\n    Scale 1 0.5 2\n    Translation 2 -1 1\n}\n"
-    "Box\n{\n    Material white\n    Scale 1 0.5 2\n    Translation 2 -1 1\n}\n";
+// Two point lights; matte, glossy, specular-only and textured materials (the last shaded by shadingPointAt at Q,
+// the rest in lanes); objects twice at one place (ties).
+std::string extras() {
+    return std::string("PointLight\n{\n    Position 1 6 5\n    Color 0.9 0.8 0.7\n}\n"
+                       "PointLight\n{\n    Position -3 -2 6\n    Color 0.3 0.3 0.4\n}\n"
+                       "Texture\n{\n    Name face\n    Source \"") +
+           test::sourcePath("scenes/assets/head_diffuse.png") +
+           "\"\n}\n"
+           "Material\n{\n    Name glossy\n    DiffuseColor 0.2 0.5 0.7\n    SpecularColor 0.6 0.6 0.6\n"
+           "    Roughness 0.3\n}\n"
+           "Material\n{\n    Name chrome\n    DiffuseColor 0 0 0\n    SpecularColor 0.7 0.7 0.7\n    Roughness 0.2\n}\n"
+           "Material\n{\n    Name printed\n    DiffuseTexture face\n    DiffuseColor 1 1 1\n}\n"
+           "Sphere\n{\n    Material glossy\n    Center -2 1 2\n    Radius 0.7\n}\n"
+           "Sphere\n{\n    Material glossy\n    Center -2 1 2\n    Radius 0.7\n}\n"
+           "Sphere\n{\n    Material chrome\n    Center 0.5 -1.2 1.2\n    Radius 0.6\n}\n"
+           "Sphere\n{\n    Material printed\n    Center 1.5 2 0.5\n    Radius 0.8\n}\n"
+           "Box\n{\n    Material white\n    Scale 1 0.5 2\n    Translation 2 -1 1\n}\n"
+           "Box\n{\n    Material white\n    Scale 1 0.5 2\n    Translation 2 -1 1\n}\n";
+}
 
 // Point lights, indirect light and the rest: every feature but area lights, whose draws would interleave.
 constexpr FeatureMask kFeatures = kSpecialisedFeatures & ~kFeatureAreaLights;
@@ -31,7 +44,7 @@ constexpr FeatureMask kFeatures = kSpecialisedFeatures & ~kFeatureAreaLights;
 TEST(IndirectLight, TogetherIsOneByOneBitForBit) {
     uint32_t compared = 0, packetsOfTwo = 0;
     for (uint32_t seed = 1; seed <= 8; ++seed) {
-        test::RandomScene scene = test::makeScene(seed, kExtras);
+        test::RandomScene scene = test::makeScene(seed, extras());
         ASSERT_EQ(scene.view.areaLights.count, 0u);
         const CameraFrame camera = makeCameraFrame(Vec3(0.0f, 1.0f, 12.0f), Vec3(0.0f), 50.0f, 24, 18);
         for (uint32_t q : {1u, 2u, 3u, 6u}) {  // 2q² = 2, 8, 18, 72 directions (72: a packet and a part)
@@ -80,7 +93,7 @@ TEST(IndirectLight, TogetherIsOneByOneBitForBit) {
 
 // The rule that chooses the packets: no area lights in F, enough directions, no meshes or CSG solids.
 TEST(IndirectLight, PacketsApplyOnlyWhereTheirAnswerIsTheLoops) {
-    const test::RandomScene plain = test::makeScene(3, kExtras);
+    const test::RandomScene plain = test::makeScene(3, extras());
     SceneView view = plain.view;
     view.meshes.count = 0;
     view.csgs.count = 0;
