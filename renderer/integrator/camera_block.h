@@ -80,9 +80,9 @@ inline void indirectOfPoints(const SceneView& scene, BlockPoints& b, uint64_t at
     RayPacket packet;
     RayOrigins origins;
     uint8_t owner[kPacketRays];  // the point each ray of the packet leaves from
+    alignas(64) float wx[kPacketRays], wy[kPacketRays], wz[kPacketRays];  // one point's directions
     PerRay<TracedRay> traced;
-    PerRay<ShadingPoint> qPoints;
-    PerRay<MaterialData> qMaterials;
+    PointLanes qPoints;  // the points Q the directions find, and their materials
     PerRay<Vec3> fromQ;
     int used = 0;
     auto flush = [&] {
@@ -94,7 +94,7 @@ inline void indirectOfPoints(const SceneView& scene, BlockPoints& b, uint64_t at
         }
         const uint64_t active = used == kPacketRays ? ~0ull : (1ull << used) - 1;
         tracePacket(scene, origins, packet, active, traced.data());
-        const uint64_t atObject = lightFromFoundPoints(scene, traced, active, qPoints, qMaterials, fromQ, rays);
+        const uint64_t atObject = lightFromFoundPoints(scene, traced, active, qPoints, fromQ, rays);
         for (uint64_t m = atObject; m; m &= m - 1) {
             const int k = __builtin_ctzll(m), i = owner[k];
             const float on = evalOrenNayar(views[i], b.points[i].n, traced[k].ray.direction);
@@ -108,15 +108,20 @@ inline void indirectOfPoints(const SceneView& scene, BlockPoints& b, uint64_t at
         views[i] = orenNayarView(sp.n, sp.v, b.materials[i].roughness);
         sum[i] = Vec3(0.0f);
         const ConeFrame about = coneFrame(sp.n);
-        for (uint32_t j = 0; j < directions[i].size; ++j) {
-            const Vec3 w = indirectDirection(about, directions[i].stratum(j), q, streams[i]);
-            if (dot(w, sp.ng) <= 0.0f) continue;  // below the geometric surface: contributes 0
-            ++rays;
-            origins.ox[used] = sp.above.x, origins.oy[used] = sp.above.y, origins.oz[used] = sp.above.z;
-            packet.dx[used] = w.x, packet.dy[used] = w.y, packet.dz[used] = w.z;
-            packet.tMax[used] = INFINITY;
-            owner[used] = uint8_t(i);
-            if (++used == kPacketRays) flush();
+        for (uint32_t first = 0; first < directions[i].size; first += kPacketRays) {
+            const uint32_t count = directions[i].size - first < kPacketRays ? directions[i].size - first : kPacketRays;
+            // Those below the geometric surface contribute 0: not traced.
+            const uint64_t above = indirectDirectionsLanes(about, directions[i], first, count, q, sp.ng, streams[i],
+                                                           wx, wy, wz);
+            for (uint64_t left = above; left; left &= left - 1) {
+                const int k = __builtin_ctzll(left);
+                ++rays;
+                origins.ox[used] = sp.above.x, origins.oy[used] = sp.above.y, origins.oz[used] = sp.above.z;
+                packet.dx[used] = wx[k], packet.dy[used] = wy[k], packet.dz[used] = wz[k];
+                packet.tMax[used] = INFINITY;
+                owner[used] = uint8_t(i);
+                if (++used == kPacketRays) flush();
+            }
         }
     }
     if (used > 0) flush();

@@ -53,9 +53,9 @@ struct PointBrdf {
     }
 };
 
-// PointBrdf(sp, m).reflects(), without the view it computes.
-TRAZO_HD bool reflectsLight(const ShadingPoint& sp, const MaterialData& m) {
-    return (!isBlack(m.diffuse) || !isBlack(m.specular)) && dot(sp.n, sp.v) > 0.0f;
+// PointBrdf(sp, m).reflects() of a point with normal n, viewer v and those lobes, without the view it computes.
+TRAZO_HD bool reflectsLight(Vec3 diffuse, Vec3 specular, Vec3 n, Vec3 v) {
+    return (!isBlack(diffuse) || !isBlack(specular)) && dot(n, v) > 0.0f;
 }
 
 // The shadow ray from the shading point towards a light sample X: l the unit vector to X, leaving from origin
@@ -194,37 +194,51 @@ inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, c
 }
 
 // Host: up to kPacketRays shading points and their materials, structure of arrays, so that each SIMD lane can
-// shade its own point (directPointLightsTogether).
+// shade its own point (directLightOfLanes).
 struct PointLanes {
     alignas(64) float px[kPacketRays], py[kPacketRays], pz[kPacketRays];  // p
     alignas(64) float gx[kPacketRays], gy[kPacketRays], gz[kPacketRays];  // ng
     alignas(64) float nx[kPacketRays], ny[kPacketRays], nz[kPacketRays];  // n
     alignas(64) float vx[kPacketRays], vy[kPacketRays], vz[kPacketRays];  // v
     alignas(64) float ax[kPacketRays], ay[kPacketRays], az[kPacketRays];  // above
+    alignas(64) float offset[kPacketRays];
     alignas(64) float dr[kPacketRays], dg[kPacketRays], db[kPacketRays];  // the material's diffuse colour
     alignas(64) float sr[kPacketRays], sg[kPacketRays], sb[kPacketRays];  // its specular colour
     alignas(64) float roughness[kPacketRays];
 
-    // Lanes [0, used): the points of `at`, zeros elsewhere (never shaded, but computed in their lanes).
-    void gather(const ShadingPoint* points, const MaterialData* materials, uint64_t at, int used) {
-        for (int i = 0; i < used; ++i) {
-            if (!(at >> i & 1u)) {
-                px[i] = py[i] = pz[i] = gx[i] = gy[i] = gz[i] = nx[i] = ny[i] = nz[i] = 0.0f;
-                vx[i] = vy[i] = vz[i] = ax[i] = ay[i] = az[i] = 0.0f;
-                dr[i] = dg[i] = db[i] = sr[i] = sg[i] = sb[i] = roughness[i] = 0.0f;
-                continue;
-            }
-            const ShadingPoint& sp = points[i];
-            const MaterialData& m = materials[i];
-            px[i] = sp.p.x, py[i] = sp.p.y, pz[i] = sp.p.z;
-            gx[i] = sp.ng.x, gy[i] = sp.ng.y, gz[i] = sp.ng.z;
-            nx[i] = sp.n.x, ny[i] = sp.n.y, nz[i] = sp.n.z;
-            vx[i] = sp.v.x, vy[i] = sp.v.y, vz[i] = sp.v.z;
-            ax[i] = sp.above.x, ay[i] = sp.above.y, az[i] = sp.above.z;
-            dr[i] = m.diffuse.x, dg[i] = m.diffuse.y, db[i] = m.diffuse.z;
-            sr[i] = m.specular.x, sg[i] = m.specular.y, sb[i] = m.specular.z;
-            roughness[i] = m.roughness;
+    void setPoint(int i, const ShadingPoint& sp) {
+        px[i] = sp.p.x, py[i] = sp.p.y, pz[i] = sp.p.z;
+        gx[i] = sp.ng.x, gy[i] = sp.ng.y, gz[i] = sp.ng.z;
+        nx[i] = sp.n.x, ny[i] = sp.n.y, nz[i] = sp.n.z;
+        vx[i] = sp.v.x, vy[i] = sp.v.y, vz[i] = sp.v.z;
+        ax[i] = sp.above.x, ay[i] = sp.above.y, az[i] = sp.above.z;
+        offset[i] = sp.offset;
+    }
+    void setMaterial(int i, const MaterialData& m) {
+        dr[i] = m.diffuse.x, dg[i] = m.diffuse.y, db[i] = m.diffuse.z;
+        sr[i] = m.specular.x, sg[i] = m.specular.y, sb[i] = m.specular.z;
+        roughness[i] = m.roughness;
+    }
+    // Zeros in lane i: never shaded, but computed in its group.
+    void clear(int i) {
+        px[i] = py[i] = pz[i] = gx[i] = gy[i] = gz[i] = nx[i] = ny[i] = nz[i] = 0.0f;
+        vx[i] = vy[i] = vz[i] = ax[i] = ay[i] = az[i] = offset[i] = 0.0f;
+        dr[i] = dg[i] = db[i] = sr[i] = sg[i] = sb[i] = roughness[i] = 0.0f;
+    }
+    // The lanes of `at` whose point reflects light (reflectsLight).
+    uint64_t reflecting(uint64_t at) const {
+        uint64_t r = 0;
+        for (uint64_t left = at; left; left &= left - 1) {
+            const int i = __builtin_ctzll(left);
+            if (reflectsLight(Vec3(dr[i], dg[i], db[i]), Vec3(sr[i], sg[i], sb[i]), Vec3(nx[i], ny[i], nz[i]),
+                              Vec3(vx[i], vy[i], vz[i])))
+                r |= 1ull << i;
         }
+        return r;
+    }
+    // ShadingPoint::rayOrigin of lane i towards the side below its geometric normal.
+    Vec3 originBelow(int i) const {
+        return bumpedOrigin(Vec3(px[i], py[i], pz[i]), -(Vec3(gx[i], gy[i], gz[i]) * offset[i]));
     }
     static packet_detail::V3 lanes(const float* x, const float* y, const float* z, int o) {
         return {packet_detail::load(x + o), packet_detail::load(y + o), packet_detail::load(z + o)};
@@ -292,23 +306,16 @@ inline packet_detail::V3 evalPointBrdfLanes(const PointLanes& q, int o, const pa
     return {specular ? f.x + ks.x * ct : f.x, specular ? f.y + ks.y * ct : f.y, specular ? f.z + ks.z * ct : f.z};
 }
 
-// Host: directLight<F> for F without area lights (point lights only) at each point of `at` (bit i: points[i]
-// with materials[i]) into out[i]: for each light in turn, the points' shadow rays aimed in SIMD lanes (as
-// aimShadowRay), traced together, each from its own origin (occludedPacket), and the BRDF of the visible ones
-// in lanes (evalPointBrdfLanes). The same rays and sums, bit for bit.
-inline void directPointLightsTogether(const SceneView& scene, const ShadingPoint* points,
-                                      const MaterialData* materials, uint64_t at, Vec3* out, uint32_t& rays) {
+// Host: directLight<F> for F without area lights (point lights only) at the points of q's lanes `reflecting` (those
+// that reflect light, PointLanes::reflecting) added to out[i] (0 where a point sees no light): for each light in
+// turn, the points' shadow rays aimed in SIMD lanes (as aimShadowRay), traced together, each from its own origin
+// (occludedPacket), and the BRDF of the visible ones in lanes (evalPointBrdfLanes). The same rays and sums as
+// directLight, bit for bit.
+inline void directLightOfLanes(const SceneView& scene, const PointLanes& q, uint64_t reflecting, Vec3* out,
+                               uint32_t& rays) {
     using namespace packet_detail;
-    uint64_t reflecting = 0;
-    for (uint64_t left = at; left; left &= left - 1) {
-        const int i = __builtin_ctzll(left);
-        out[i] = Vec3(0.0f);
-        if (reflectsLight(points[i], materials[i])) reflecting |= 1ull << i;
-    }
     if (!reflecting) return;
-    const int lanesUsed = (64 - __builtin_clzll(reflecting) + kLanes - 1) / kLanes * kLanes;
-    PointLanes q;
-    q.gather(points, materials, reflecting, lanesUsed);
+    const int lanesUsed = groupedLanes(reflecting);
     RayPacket packet;
     RayOrigins origins;
     for (int i = lanesUsed; i < kPacketRays; ++i) {  // never traced, but read whole by the packet's set-up
@@ -343,7 +350,7 @@ inline void directPointLightsTogether(const SceneView& scene, const ShadingPoint
             const V3 ng = PointLanes::lanes(q.gx, q.gy, q.gz, o);
             for (uint64_t down = lanes & bits(dot(l, ng) < 0.0f); down; down &= down - 1) {  // rayOrigin below
                 const int i = o + __builtin_ctzll(down);
-                const Vec3 origin = points[i].rayOrigin(Vec3(packet.dx[i], packet.dy[i], packet.dz[i]));
+                const Vec3 origin = q.originBelow(i);
                 origins.ox[i] = origin.x, origins.oy[i] = origin.y, origins.oz[i] = origin.z;
             }
             const V3 toEnd = {x.x - load(origins.ox + o), x.y - load(origins.oy + o), x.z - load(origins.oz + o)};
@@ -366,6 +373,24 @@ inline void directPointLightsTogether(const SceneView& scene, const ShadingPoint
             out[i] += visible >> i & 1u ? light.color * Vec3(fx[i], fy[i], fz[i]) : Vec3(0.0f);
         }
     }
+}
+
+// Host: directLight<F> for F without area lights at each point of `at` (bit i: points[i] with materials[i]) into
+// out[i] (directLightOfLanes).
+inline void directPointLightsTogether(const SceneView& scene, const ShadingPoint* points,
+                                      const MaterialData* materials, uint64_t at, Vec3* out, uint32_t& rays) {
+    PointLanes q;
+    const int used = packet_detail::groupedLanes(at);
+    for (int i = 0; i < used; ++i) {
+        if (at >> i & 1u) {
+            q.setPoint(i, points[i]);
+            q.setMaterial(i, materials[i]);
+            out[i] = Vec3(0.0f);
+        } else {
+            q.clear(i);
+        }
+    }
+    directLightOfLanes(scene, q, q.reflecting(at), out, rays);
 }
 #endif
 
