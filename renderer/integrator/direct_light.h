@@ -92,9 +92,42 @@ TRAZO_HD Vec3 cellPoint(const AreaLightData& light, uint32_t s, SampleStream& rn
 // Host: blocks of fewer cells take shadeFromPoint ray by ray (a packet's set-up costs more than it saves).
 constexpr uint32_t kMinShadowPacket = 4;
 
+// Host: evalCookTorrance(n, l, v, roughness) in SIMD lanes, one l per lane, operation for operation (minOf(a, b)
+// is a < b ? a : b, maxOf a > b ? a : b); n, v and the roughness one for all lanes (Vec3, float) or one per lane
+// (V3, LaneF). expf only in the lanes of `lanes` (libm's, lane by lane, as the scalar code calls it).
+template <class Vec, class Real>
+inline packet_detail::LaneF cookTorranceLanes(const Vec& n, const Vec& v, const packet_detail::V3& l, Real roughness,
+                                              uint64_t lanes) {
+    using namespace packet_detail;
+    const LaneF one = splat(1.0f);
+    const LaneF m = maxOf(asLanes(roughness), splat(0.01f));
+    const V3 sum = {l.x + v.x, l.y + v.y, l.z + v.z};
+    const LaneF inv = 1.0f / sqrt(dot(sum, sum));
+    const V3 h = {sum.x * inv, sum.y * inv, sum.z * inv};
+    const LaneF nh0 = dot(n, h);
+    const LaneF nh = nh0 < 1.0f ? nh0 : one;
+    const LaneF nv = asLanes(dot(n, v));
+    const LaneF nl = dot(n, l);
+    const LaneF vh = dot(v, h);
+    const LaneI none = (nh <= 0.0f) | (vh <= 0.0f);
+    const LaneF nh2 = nh * nh;
+    const LaneF tan2 = (1.0f - nh2) / nh2;
+    const LaneF m2 = m * m;
+    const LaneF exponent = -tan2 / m2;
+    LaneF e = splat(0.0f);
+    for (uint64_t left = lanes & ~bits(none); left; left &= left - 1) {
+        const int i = __builtin_ctzll(left);
+        e[i] = expf(exponent[i]);
+    }
+    const LaneF piD = e / (m2 * nh2 * nh2);
+    const LaneF nearer = nv < nl ? nv : nl;
+    const LaneF g2 = 2.0f * nh * nearer / vh;
+    const LaneF gTerm = 1.0f < g2 ? one : g2;
+    return none ? splat(0.0f) : piD * gTerm / (4.0f * nv);
+}
+
 // Host: brdf.eval(l) for the rays of `lanes` in group g of the packet, in SIMD lanes: PointBrdf::eval with
-// evalOrenNayar and evalCookTorrance operation for operation (minOf(a, b) is a < b ? a : b, maxOf a > b ? a : b),
-// expf lane by lane (libm's, as the scalar code calls it).
+// evalOrenNayar and evalCookTorrance (cookTorranceLanes) operation for operation.
 inline void evalBrdfLanes(const PointBrdf& brdf, const RayPacket& packet, int g, uint64_t lanes, float* fx,
                           float* fy, float* fz) {
     using namespace packet_detail;
@@ -117,31 +150,7 @@ inline void evalBrdfLanes(const PointBrdf& brdf, const RayPacket& packet, int g,
         f = {d.x * on, d.y * on, d.z * on};
     }
     if (brdf.hasSpecular) {
-        const Vec3 v = brdf.sp.v;
-        const float m = maxOf(brdf.m.roughness, 0.01f);
-        const V3 sum = {l.x + v.x, l.y + v.y, l.z + v.z};
-        const LaneF inv = 1.0f / sqrt(dot(sum, sum));
-        const V3 h = {sum.x * inv, sum.y * inv, sum.z * inv};
-        const LaneF nh0 = dot(n, h);
-        const LaneF nh = nh0 < 1.0f ? nh0 : splat(1.0f);
-        const float nv = dot(n, v);
-        const LaneF nl = dot(n, l);
-        const LaneF vh = dot(v, h);
-        const LaneI zero = (nh <= 0.0f) | (vh <= 0.0f);
-        const LaneF nh2 = nh * nh;
-        const LaneF tan2 = (1.0f - nh2) / nh2;
-        const float m2 = m * m;
-        const LaneF exponent = -tan2 / m2;
-        LaneF e = splat(0.0f);
-        for (uint64_t left = lanes & ~bits(zero); left; left &= left - 1) {
-            const int i = __builtin_ctzll(left);
-            e[i] = expf(exponent[i]);
-        }
-        const LaneF piD = e / (m2 * nh2 * nh2);
-        const LaneF nearer = nv < nl ? splat(nv) : nl;
-        const LaneF g2 = 2.0f * nh * nearer / vh;
-        const LaneF gTerm = 1.0f < g2 ? splat(1.0f) : g2;
-        const LaneF ct = zero ? splat(0.0f) : piD * gTerm / (4.0f * nv);
+        const LaneF ct = cookTorranceLanes(n, brdf.sp.v, l, brdf.m.roughness, lanes);
         const Vec3 sp = brdf.m.specular;
         f = {f.x + sp.x * ct, f.y + sp.y * ct, f.z + sp.z * ct};
     }
@@ -245,10 +254,9 @@ struct PointLanes {
     }
 };
 
-// Host: PointBrdf(points[i], materials[i]).eval(l) in lane i of the group at lane offset o, for the lanes of
-// `lanes` (bit k: lane o + k): orenNayarView, evalOrenNayar and evalCookTorrance operation for operation, each
-// lane with its own point and material, a black lobe adding nothing; expf lane by lane (libm's, as the scalar
-// code calls it).
+// Host: PointBrdf(sp, m).eval(l) of the point and material in lane i of q, in lane i of the group at lane offset
+// o, for the lanes of `lanes` (bit k: lane o + k): orenNayarView and evalOrenNayar operation for operation, then
+// cookTorranceLanes, a black lobe adding nothing.
 inline packet_detail::V3 evalPointBrdfLanes(const PointLanes& q, int o, const packet_detail::V3& l, uint64_t lanes) {
     using namespace packet_detail;
     const V3 n = PointLanes::lanes(q.nx, q.ny, q.nz, o), v = PointLanes::lanes(q.vx, q.vy, q.vz, o);
@@ -280,29 +288,7 @@ inline packet_detail::V3 evalPointBrdfLanes(const PointLanes& q, int o, const pa
     const LaneI specular = ~((ks.x == 0.0f) & (ks.y == 0.0f) & (ks.z == 0.0f));
     const uint64_t specularLanes = lanes & bits(specular);
     if (!specularLanes) return f;
-    // evalCookTorrance
-    const LaneF m = sigma > 0.01f ? sigma : splat(0.01f);
-    const V3 sum = {l.x + v.x, l.y + v.y, l.z + v.z};
-    const LaneF inv = 1.0f / sqrt(dot(sum, sum));
-    const V3 h = {sum.x * inv, sum.y * inv, sum.z * inv};
-    const LaneF nh0 = dot(n, h);
-    const LaneF nh = nh0 < 1.0f ? nh0 : one;
-    const LaneF vh = dot(v, h);
-    const LaneI none = (nh <= 0.0f) | (vh <= 0.0f);
-    const LaneF nh2 = nh * nh;
-    const LaneF tan2 = (1.0f - nh2) / nh2;
-    const LaneF m2 = m * m;
-    const LaneF exponent = -tan2 / m2;
-    LaneF e = zero;
-    for (uint64_t left = specularLanes & ~bits(none); left; left &= left - 1) {
-        const int i = __builtin_ctzll(left);
-        e[i] = expf(exponent[i]);
-    }
-    const LaneF piD = e / (m2 * nh2 * nh2);
-    const LaneF nearer = nv < nl ? nv : nl;
-    const LaneF g2 = 2.0f * nh * nearer / vh;
-    const LaneF gTerm = 1.0f < g2 ? one : g2;
-    const LaneF ct = none ? zero : piD * gTerm / (4.0f * nv);
+    const LaneF ct = cookTorranceLanes(n, v, l, sigma, specularLanes);
     return {specular ? f.x + ks.x * ct : f.x, specular ? f.y + ks.y * ct : f.y, specular ? f.z + ks.z * ct : f.z};
 }
 
