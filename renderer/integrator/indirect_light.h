@@ -91,10 +91,10 @@ inline bool indirectPacketsApply(const SceneView& scene, uint32_t directions) {
 // (nextFloatUp, nextFloatDown) in integer lanes.
 inline packet_detail::V3 bumpedOriginLanes(const packet_detail::V3& p, const packet_detail::V3& offset) {
     using namespace packet_detail;
-    const auto up = [](LaneF v) {
-        const LaneI b = (LaneI)v;
-        const LaneI stepped = v > 0.0f ? b + 1 : b - 1;
-        const LaneI r = v == 0.0f ? LaneI{} + 1 : stepped;  // ±0: the smallest subnormal, bits 1
+    const auto up = [](LaneF v) {  // unsigned bits, as nextFloatUp's: −0's step below wraps, never overflows
+        const LaneU b = (LaneU)v;
+        const LaneU stepped = v > 0.0f ? b + 1u : b - 1u;
+        const LaneU r = v == 0.0f ? LaneU{} + 1u : stepped;  // ±0: the smallest subnormal, bits 1
         return (LaneF)(v < INFINITY ? r : b);                // +∞ and NaN stay
     };
     const auto bump = [&](LaneF po, LaneF off) {
