@@ -170,20 +170,10 @@ inline Vec3 shadeCellsTogether(const SceneView& scene, const ShadingPoint& sp, c
     const Vec3 below = bumpedOrigin(sp.p, -(sp.ng * sp.offset));  // rayOrigin towards −ng
     RayPacket packet;
     alignas(64) float column[kPacketRays], row[kPacketRays];  // of each cell in the light's grid
-    const uint32_t stepU = cells.blocks % light.cellsU, stepV = cells.blocks / light.cellsU;
     alignas(64) float fx[kPacketRays], fy[kPacketRays], fz[kPacketRays];  // brdf.eval of the visible cells
     for (uint32_t start = 0; start < cells.size; start += kPacketRays) {
         const uint32_t count = cells.size - start < kPacketRays ? cells.size - start : kPacketRays;
-        // Strata step by cells.blocks: column and row of stratum(start + k) without a division per cell.
-        uint32_t u = cells.stratum(start) % light.cellsU, v = cells.stratum(start) / light.cellsU;
-        for (uint32_t k = 0; k < count; ++k) {
-            column[k] = float(u);
-            row[k] = float(v);
-            u += stepU;
-            v += stepV;
-            if (u >= light.cellsU) u -= light.cellsU, ++v;
-        }
-        for (uint32_t k = count; k < (uint32_t)kPacketRays; ++k) column[k] = row[k] = 0.0f;
+        cells.gridCells(start, count, light.cellsU, kPacketRays, column, row);
         const AimedRays aimed = aimShadowRays(light.rect, light.cellsU, light.cellsV, column, row, rng.key,
                                               rng.dimension, sp.p, sp.n, sp.ng, sp.above, below, packet);
         rng.dimension += 2u * count;  // cellPoint's two draws per cell, taken in the lanes

@@ -205,17 +205,7 @@ inline uint64_t indirectDirectionsLanes(const ConeFrame& about, const StrataBloc
     using namespace packet_detail;
     const int used = int(count + kLanes - 1) / kLanes * kLanes;
     alignas(64) float column[kPacketRays], row[kPacketRays];  // of each stratum in the q × 2q grid
-    // Strata step by block.blocks: column and row of stratum(first + k) without a division per direction.
-    const uint32_t stepColumn = block.blocks % q, stepRow = block.blocks / q;
-    uint32_t c = block.stratum(first) % q, r = block.stratum(first) / q;
-    for (uint32_t k = 0; k < count; ++k) {
-        column[k] = float(c);
-        row[k] = float(r);
-        c += stepColumn;
-        r += stepRow;
-        if (c >= q) c -= q, ++r;
-    }
-    for (int k = int(count); k < used; ++k) column[k] = row[k] = 0.0f;
+    block.gridCells(first, count, q, uint32_t(used), column, row);
     LaneU lane;
     for (int i = 0; i < kLanes; ++i) lane[i] = uint32_t(i);
     alignas(64) float theta[kPacketRays], phi[kPacketRays];

@@ -81,6 +81,20 @@ struct StrataBlock {
     uint32_t blocks;  // count / size: the passes of the grid's cycle
     uint32_t size;
     TRAZO_HD uint32_t stratum(uint32_t j) const { return offset + j * blocks; }
+    // Host lanes: the column and row, in a grid `width` strata wide, of strata first … first + count − 1 as
+    // floats, stepped by `blocks` without a division per stratum; zeros from count up to padTo.
+    void gridCells(uint32_t first, uint32_t count, uint32_t width, uint32_t padTo, float* column, float* row) const {
+        const uint32_t stepColumn = blocks % width, stepRow = blocks / width;
+        uint32_t c = stratum(first) % width, r = stratum(first) / width;
+        for (uint32_t k = 0; k < count; ++k) {
+            column[k] = float(c);
+            row[k] = float(r);
+            c += stepColumn;
+            r += stepRow;
+            if (c >= width) c -= width, ++r;
+        }
+        for (uint32_t k = count; k < padTo; ++k) column[k] = row[k] = 0.0f;
+    }
 };
 
 // Identifies the grids of one shading point in the pixel's sample tree.
