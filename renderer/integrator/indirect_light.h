@@ -196,9 +196,9 @@ inline uint64_t lightFromFoundPoints(const SceneView& scene, PerRay<TracedRay>& 
 
 // Host: the directions j = first … first + count − 1 (count ≤ kPacketRays) of a point's block into wx, wy, wz
 // [0, count), as indirectDirection draws them one after another from rng (θ then φ, two draws each; rng moves on
-// by 2·count): the strata, draws and the cone's arithmetic in SIMD lanes, sinf and cosf lane by lane (libm's, as
-// the scalar code calls them), the same bits. Returns the directions indirectLightOneByOne traces, those not below
-// the geometric surface ng (bit k: direction first + k).
+// by 2·count): the strata, draws, sines and cosines (sinCosOf) and the cone's arithmetic in SIMD lanes, the
+// same bits. Returns the directions indirectLightOneByOne traces, those not below the geometric surface ng (bit
+// k: direction first + k).
 inline uint64_t indirectDirectionsLanes(const ConeFrame& about, const StrataBlock& block, uint32_t first,
                                         uint32_t count, uint32_t q, Vec3 ng, SampleStream& rng, float* wx,
                                         float* wy, float* wz) {
@@ -208,25 +208,15 @@ inline uint64_t indirectDirectionsLanes(const ConeFrame& about, const StrataBloc
     block.gridCells(first, count, q, uint32_t(used), column, row);
     LaneU lane;
     for (int i = 0; i < kLanes; ++i) lane[i] = uint32_t(i);
-    alignas(64) float theta[kPacketRays], phi[kPacketRays];
-    for (int o = 0; o < used; o += kLanes) {
-        const LaneU draw = rng.dimension + 2u * (uint32_t(o) + lane);
-        const LaneF t = (load(column + o) + unitFloats(rng.key, draw)) / float(q) * 1.57079632679f;
-        const LaneF p = (load(row + o) + unitFloats(rng.key, draw + 1u)) / float(2 * q) * 6.28318530718f;
-        std::memcpy(theta + o, &t, sizeof t);
-        std::memcpy(phi + o, &p, sizeof p);
-    }
-    rng.dimension += 2u * count;
-    alignas(64) float sinT[kPacketRays], cosT[kPacketRays], sinP[kPacketRays], cosP[kPacketRays];
-    for (uint32_t k = 0; k < count; ++k) {
-        sinT[k] = sinf(theta[k]), cosT[k] = cosf(theta[k]);
-        sinP[k] = sinf(phi[k]), cosP[k] = cosf(phi[k]);
-    }
-    for (int k = int(count); k < used; ++k) sinT[k] = cosT[k] = sinP[k] = cosP[k] = 0.0f;
     const Vec3 a = about.axis, t1 = about.t1, t2 = about.t2;
     uint64_t traced = 0;
-    for (int o = 0; o < used; o += kLanes) {  // directionInCone
-        const LaneF st = load(sinT + o), ct = load(cosT + o), sp = load(sinP + o), cp = load(cosP + o);
+    for (int o = 0; o < used; o += kLanes) {
+        const LaneU draw = rng.dimension + 2u * (uint32_t(o) + lane);
+        const LaneF theta = (load(column + o) + unitFloats(rng.key, draw)) / float(q) * 1.57079632679f;
+        const LaneF phi = (load(row + o) + unitFloats(rng.key, draw + 1u)) / float(2 * q) * 6.28318530718f;
+        LaneF st, ct, sp, cp;  // directionInCone
+        sinCosOf<LaneTrig>(theta, st, ct);
+        sinCosOf<LaneTrig>(phi, sp, cp);
         const V3 v = {a.x * ct + (t1.x * cp + t2.x * sp) * st, a.y * ct + (t1.y * cp + t2.y * sp) * st,
                       a.z * ct + (t1.z * cp + t2.z * sp) * st};
         const LaneF inv = 1.0f / sqrt(dot(v, v));
@@ -236,6 +226,7 @@ inline uint64_t indirectDirectionsLanes(const ConeFrame& about, const StrataBloc
         std::memcpy(wz + o, &w.z, sizeof w.z);
         traced |= bits(~(dot(ng, w) <= 0.0f)) << o;
     }
+    rng.dimension += 2u * count;
     return traced & (count == (uint32_t)kPacketRays ? ~0ull : (1ull << count) - 1);
 }
 

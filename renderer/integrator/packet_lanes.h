@@ -56,6 +56,14 @@ typedef uint32_t LaneU __attribute__((vector_size(kLanes * 4)));
 constexpr int kGroups = kPacketRays / kLanes;
 constexpr uint64_t kGroupBits = kLanes == 64 ? ~0ull : (1ull << kLanes) - 1;
 
+// sinCosOf's number type in lanes: sinCosOf<LaneTrig> is sinCos lane by lane, bit for bit.
+struct LaneTrig {
+    using F = LaneF;
+    using I = LaneI;
+    static I truncate(F x) { return __builtin_convertvector(x, LaneI); }
+    static F toFloat(I k) { return __builtin_convertvector(k, LaneF); }
+};
+
 // The lanes of the groups up to the last ray of `rays` (bit i: ray i): a multiple of kLanes, 0 for none.
 inline int groupedLanes(uint64_t rays) {
     return rays ? (64 - __builtin_clzll(rays) + kLanes - 1) / kLanes * kLanes : 0;

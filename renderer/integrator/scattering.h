@@ -1,6 +1,7 @@
 // Mirror, glossy-cone and Snell refraction directions (SPEC §5 Reflection and Transmission).
 #pragma once
 
+#include "core/sin_cos.h"
 #include "core/vec3.h"
 
 namespace trazo {
@@ -28,9 +29,12 @@ TRAZO_HD ConeFrame coneFrame(Vec3 axis) {
 }
 
 // A direction at polar angle theta and azimuth phi about the frame's unit axis.
+// theta and phi: 0 ≤ angle < 2¹²·π/2 (sinCos).
 TRAZO_HD Vec3 directionInCone(const ConeFrame& f, float theta, float phi) {
-    const float sinTheta = sinf(theta);
-    return normalize(f.axis * cosf(theta) + (f.t1 * cosf(phi) + f.t2 * sinf(phi)) * sinTheta);
+    float sinTheta, cosTheta, sinPhi, cosPhi;
+    sinCos(theta, sinTheta, cosTheta);
+    sinCos(phi, sinPhi, cosPhi);
+    return normalize(f.axis * cosTheta + (f.t1 * cosPhi + f.t2 * sinPhi) * sinTheta);
 }
 
 // The same about a unit axis.
