@@ -14,17 +14,19 @@ namespace trazo {
 TRAZO_HD Vec3 sampleIsotropic(float u1, float u2) {
     const float z = 1.0f - 2.0f * u1;
     const float sinTheta = 2.0f * sqrtf(maxOf(0.0f, u1 * (1.0f - u1)));
-    const float phi = 6.28318530717958648f * u2;
-    return {sinTheta * cosf(phi), sinTheta * sinf(phi), z};
+    float sinPhi, cosPhi;
+    sinCos(6.28318530717958648f * u2, sinPhi, cosPhi);
+    return {sinTheta * cosPhi, sinTheta * sinPhi, z};
 }
 
 // A direction about the unit vector n with pdf cos θ/π (Malley: a uniform disk point lifted to the
 // hemisphere), cos θ = √(1 − u1) > 0 for u1 < 1, so never tangent to the surface.
 TRAZO_HD Vec3 sampleCosineAbout(Vec3 n, float u1, float u2) {
     const float sinTheta = sqrtf(u1), cosTheta = sqrtf(1.0f - u1);
-    const float phi = 6.28318530717958648f * u2;
+    float sinPhi, cosPhi;
+    sinCos(6.28318530717958648f * u2, sinPhi, cosPhi);
     const ConeFrame f = coneFrame(n);
-    return f.t1 * (sinTheta * cosf(phi)) + f.t2 * (sinTheta * sinf(phi)) + n * cosTheta;
+    return f.t1 * (sinTheta * cosPhi) + f.t2 * (sinTheta * sinPhi) + n * cosTheta;
 }
 
 // A distance with pdf e^(−s/d)/d (mean d, the free path of a medium of extinction 1/d): −d·ln(1 − u), through

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/sin_cos.h"
 #include "integrator/camera_frame.h"
 
 namespace trazo {
@@ -19,9 +20,10 @@ TRAZO_HD void lensStratumPoint(uint32_t stratum, uint32_t q, float u1, float u2,
     const uint32_t rings = q > 0u ? q : 1u;
     const uint32_t ring = stratum / (2u * rings), sector = stratum - ring * (2u * rings);
     const float rho = sqrtf((float(ring) + u1) / float(rings));
-    const float phi = (float(sector) + u2) * (3.14159265358979f / float(rings));
-    x = rho * cosf(phi);
-    y = rho * sinf(phi);
+    float sinPhi, cosPhi;
+    sinCos((float(sector) + u2) * (3.14159265358979f / float(rings)), sinPhi, cosPhi);
+    x = rho * cosPhi;
+    y = rho * sinPhi;
 }
 
 // The ray of image position (x, y) (pixels, as generateCameraRay) through lens point (lensX, lensY) of the unit
