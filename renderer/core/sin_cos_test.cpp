@@ -27,12 +27,12 @@ struct Worst {
 // reduction's error is some ulp of a tiny value.
 TEST(SinCos, IsWithinTwoUlpAndOneTenMillionthOfTheTrueValues) {
     Worst sine, cosine, farSine, farCosine;
-    auto check = [](float x, Worst& sin, Worst& cos, bool all) {
+    auto check = [](float x, Worst& sines, Worst& cosines, bool all) {
         float s, c;
         sinCos(x, s, c);
         const double wantSin = std::sin((double)x), wantCos = std::cos((double)x);
-        if (all || std::fabs(wantSin) >= 1.0 / 64) sin.add(s, wantSin);
-        if (all || std::fabs(wantCos) >= 1.0 / 64) cos.add(c, wantCos);
+        if (all || std::fabs(wantSin) >= 1.0 / 64) sines.add(s, wantSin);
+        if (all || std::fabs(wantCos) >= 1.0 / 64) cosines.add(c, wantCos);
         EXPECT_LE(std::fabs(s - wantSin), 1e-7) << x;
         EXPECT_LE(std::fabs(c - wantCos), 1e-7) << x;
     };
