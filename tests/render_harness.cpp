@@ -74,6 +74,17 @@ void scaleSceneAboutOrigin(Scene& scene, double factor) {
     }
 }
 
+void translateScene(Scene& scene, Vec3 delta) {
+    scene.camera.pov += delta;
+    scene.camera.poi += delta;
+#define TRAZO_X(Shape, array, Kind, keyword) \
+    for (Kind & object : scene.array) translate(object, delta);
+    TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
+    for (PointLight& light : scene.pointLights) light.position += delta;
+    for (AreaLight& light : scene.areaLights) light.position += delta;
+}
+
 double rmse(const RenderedImage& a, const RenderedImage& b) {
     double sum = 0.0;
     for (size_t i = 0; i < a.pixels.size(); ++i) {

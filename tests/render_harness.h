@@ -42,6 +42,10 @@ RenderedImage renderSceneFile(const std::string& path, const RenderRequest& requ
 // operation after it, rounds differently. Exact zeros and axis-aligned directions stay exact.
 void scaleSceneAboutOrigin(Scene& scene, double factor);
 
+// Moves the whole scene (camera, lights, every object) by `delta`: in exact arithmetic the same image, but every
+// coordinate becomes as large as the move, so every hit point carries its rounding.
+void translateScene(Scene& scene, Vec3 delta);
+
 // Root-mean-square difference over all channels.
 double rmse(const RenderedImage& a, const RenderedImage& b);
 

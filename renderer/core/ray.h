@@ -13,10 +13,34 @@ struct Ray {
 TRAZO_HD Vec3 pointAt(const Ray& r, float t) { return r.origin + r.direction * t; }
 
 // Conservative bound on the error of a hit point computed as o + t·d (a few ulps of each term, plus
-// the error of t itself, which is relative to t). Scales with the scene, so it works at any scale.
+// the error of t itself, which is relative to t). It grows with |o|: a camera far from what it sees makes it
+// large, so each object kind also computes its hit point from the surface itself (HitPoint below).
 TRAZO_HD Vec3 hitPointError(const Ray& r, float t) {
     constexpr float kRelative = 64.0f * 1.1920929e-7f;  // 64 ulps
     return (abs(r.origin) + abs(r.direction * t)) * kRelative;
+}
+
+// n units of roundoff (2⁻²⁴), pbrt-v4's γ(n) without its 1/(1 − nε): the bounds below use n with room to spare.
+TRAZO_HD constexpr float roundoff(float n) { return n * 5.96046448e-8f; }
+
+// A hit point, a conservative bound on each of its components' distance from the true surface, and the unit
+// outward geometric normal there. A point put back on a curved surface from o + t·d is not where the ray met it
+// (o + t·d errs along the ray by ulps of the ray's length): it takes the normal of where it is.
+struct HitPoint {
+    Vec3 p;
+    Vec3 error;
+    Vec3 normal;
+};
+
+TRAZO_HD HitPoint rayHitPoint(const Ray& r, float t, Vec3 normal) {
+    return HitPoint{pointAt(r, t), hitPointError(r, t), normal};
+}
+
+// Of two estimates of one hit point, the one whose error bound reaches less far along its normal: the surface's
+// own computation where the ray came from far away, o + t·d where it started close (a huge ground sphere beside
+// the camera, whose own bound is a few ulps of its radius).
+TRAZO_HD HitPoint tighter(const HitPoint& a, const HitPoint& b) {
+    return dot(abs(b.normal), b.error) < dot(abs(a.normal), a.error) ? b : a;
 }
 
 // The next float above / below v (pbrt-v4's NextFloatUp/Down): a bit step, where libm's nextafterf is a

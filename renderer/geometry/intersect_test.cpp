@@ -163,6 +163,9 @@ struct ShapeCase {
     // The length at which answers are judged: the size, except for a huge shape seen from close.
     float accuracyScale = size;
     bool exitsInward = false;  // a ray spawned into it always leaves through the far side (sphere)
+    // Where a hit is, with its error bound: the kind's objectHitPoint (a rectangle, a light, has none).
+    std::function<HitPoint(const Ray&, const ShapeHit&)> hitPoint =
+        [](const Ray& ray, const ShapeHit& hit) { return rayHitPoint(ray, hit.t, hit.normal); };
 };
 
 const Vec3 kFarDirection{0.6f, -0.48f, 0.64f};  // a unit vector with no small component
@@ -171,7 +174,8 @@ ShapeCase sphereCase(float scale, Vec3 offset) {
     const SphereShape s{offset + Vec3(0.3f, -0.2f, 0.1f) * scale, 1.0f * scale};
     return {[s](const Ray& r, float a, float b, ShapeHit& h) { return intersectSphere(s, r, a, b, h); },
             [s](const DRay& r, double a, double b, double g) { return sphereOracle(s, r, a, b, g); }, s.center,
-            s.radius, true, s.radius, true};
+            s.radius, true, s.radius, true,
+            [s](const Ray& r, const ShapeHit& h) { return objectHitPoint(SceneView{}, s, r, h); }};
 }
 
 // A sheared parallelepiped: rotate, scale non-uniformly, rotate again, translate (float, as the reader
@@ -188,7 +192,8 @@ ShapeCase boxCase(float scale, Vec3 offset) {
     const BoxShape box = makeBox(scale, offset);
     return {[box](const Ray& r, float a, float b, ShapeHit& h) { return intersectBox(box, r, a, b, h); },
             [box](const DRay& r, double a, double b, double g) { return boxOracle(box, r, a, b, g); },
-            box.worldFromObject.translation, 1.4f * scale, true};
+            box.worldFromObject.translation, 1.4f * scale, true, 1.4f * scale, false,
+            [box](const Ray& r, const ShapeHit& h) { return objectHitPoint(SceneView{}, box, r, h); }};
 }
 
 CylinderShape makeCylinder(float scale, Vec3 offset) {
@@ -199,7 +204,8 @@ ShapeCase cylinderCase(float scale, Vec3 offset) {
     const CylinderShape c = makeCylinder(scale, offset);
     return {[c](const Ray& r, float a, float b, ShapeHit& h) { return intersectCylinder(c, r, a, b, h); },
             [c](const DRay& r, double a, double b, double g) { return cylinderOracle(c, r, a, b, g); },
-            c.base + c.axis * (0.5f * c.height), 1.05f * scale, true};
+            c.base + c.axis * (0.5f * c.height), 1.05f * scale, true, 1.05f * scale, false,
+            [c](const Ray& r, const ShapeHit& h) { return objectHitPoint(SceneView{}, c, r, h); }};
 }
 
 RectangleShape makeRectangle(float scale, Vec3 offset) {
@@ -867,7 +873,9 @@ void spawnFromHits(const ShapeCase& sc, Sampler& sampler, int count, SelfTally& 
         ShapeHit h;
         if (!sc.intersect(ray, 0, kInf, h)) continue;
         ++tally.hits;
-        const Vec3 p = pointAt(ray, h.t), error = hitPointError(ray, h.t);
+        const HitPoint at = sc.hitPoint(ray, h);
+        const Vec3 p = at.p, error = at.error;
+        h.normal = at.normal;
         Vec3 n = h.normal;
         if (!sc.solid && sampler.uniform() < 0.5) n = -n;  // a rectangle is left from either side
         const Vec3 out = sampler.onSide(n);
@@ -936,6 +944,56 @@ TEST(IntersectSelf, SpawnedRaysNeverReHitTheirSurface) {
             }
         }
     }
+}
+
+TEST(IntersectSelf, SpawnedRaysFromFarAwayNeitherReHitNorStepOver) {
+    // The camera 1e3 and 1e4 sizes away from each shape, at the origin and 1e3 sizes from it: the hit point o + t·d
+    // is off the surface by ulps of the camera's distance, the kind's own hit point by ulps of the shape's. A ray
+    // spawned outwards must not come back; one spawned inwards must find the far side where the oracle does.
+    for (const NamedFactory& shape : kShapes) {
+        if (std::string(shape.name) == "rectangle") continue;  // a light: nothing leaves it
+        for (float offset : {0.0f, 1e3f}) {
+            for (double distance : {1e3, 1e4}) {
+                const ShapeCase sc = shape.make(1.0f, kFarDirection * offset);
+                Sampler sampler(37);
+                SelfTally tally;
+                spawnFromHits(sc, sampler, 2000, tally, [&] {
+                    const DVec o = toD(sc.center) + sampler.unitVector() * (sc.size * distance);
+                    const DVec target = toD(sc.center) + sampler.inBall() * (1.2 * sc.size);
+                    return Ray{toF(o), toF(normalize(target - o))};
+                });
+                std::ostringstream label;
+                label << shape.name << " at " << offset << " seen from " << distance << " away";
+                expectNoSelfIntersection(tally, label.str(), 600);
+            }
+        }
+    }
+}
+
+TEST(IntersectSelf, ThinSlabSeenFromFarAwayIsCrossedNotSteppedOver) {
+    // A pane 0.01 thick (1/200 of its width), turned 45°, seen from 1e3 away: a ray spawned into it from the
+    // front face must leave through the back face, at t of about its thickness, never start beyond it.
+    Affine3 w = makeScale(Vec3(2.0f, 2.0f, 0.01f));
+    w = then(w, makeRotation({0, 1, 0}, 0.785398f));
+    const BoxShape pane{inverse(w), w};
+    Sampler sampler(41);
+    int crossed = 0, steppedOver = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const DVec o = DVec{0.3, 0.2, 1.0} * (1e3 / std::sqrt(1.13)) + sampler.inBall() * 5.0;
+        const DVec target = sampler.inBall() * 0.5;
+        const Ray ray{toF(o), toF(normalize(target - o))};
+        ShapeHit h;
+        if (!intersectBox(pane, ray, 0.0f, kInf, h)) continue;
+        const HitPoint at = objectHitPoint(SceneView{}, pane, ray, h);
+        const Vec3 in = ray.direction;  // straight on, as a ray through glass of index 1
+        const Ray inside{offsetRayOrigin(at.p, at.error, h.normal, in), in};
+        ShapeHit back;
+        const bool exits = intersectBox(pane, inside, 0.0f, kInf, back) && dot(back.normal, in) > 0.0f &&
+                           dot(back.normal, h.normal) < 0.0f;
+        ++(exits ? crossed : steppedOver);
+    }
+    EXPECT_GT(crossed, 1000);
+    EXPECT_EQ(steppedOver, 0) << "of " << crossed + steppedOver << " rays into the pane";
 }
 
 TEST(IntersectSelf, HugeGroundSphereSeenFromClose) {

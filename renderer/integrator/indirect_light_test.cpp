@@ -59,9 +59,9 @@ TEST(IndirectLight, TogetherIsOneByOneBitForBit) {
                         if (!intersectScene(scene.view, ray, INFINITY, hit) || hit.object == kNoObject) continue;
                         const ObjectRef& o = scene.view.objects[hit.object];
                         const MaterialData& m = scene.view.materials[o.material];
-                        const SurfacePoint s = surfaceAt(scene.view, o, hit, pointAt(ray, hit.t), false);
-                        const ShadingPoint sp =
-                            facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), ray.direction, s);
+                        const HitPoint at = hitPointOn(scene.view, o, ray, hit);
+                        const SurfacePoint s = surfaceAt(scene.view, o, hit, at.p, false);
+                        const ShadingPoint sp = facingShadingPoint(at.p, at.error, ray.direction, s);
                         const uint32_t pixel = py * camera.width + px;
                         const StrataKey strata{seed, pixel, target, kSampleTreeRoot};
                         const StrataBlock directions = strata.block(kGridIndirect, 2 * q * q, target);

@@ -189,8 +189,7 @@ inline void tracePacketFrom(const SceneView& scene, const Origins& origins, RayP
             if (o.kind == ObjectKind::Box) {  // intersectBox's normal of the face the lanes found
                 const int face = nearest.boxFace[i];
                 if (object != faceObject || face != lastFace) {
-                    const Vec3 row = scene.boxes[o.index].objectFromWorld.row[face >> 1];
-                    faceNormal = normalize(row * (face & 1 ? 1.0f : -1.0f));
+                    faceNormal = boxFaceNormal(scene.boxes[o.index], face >> 1, face & 1 ? 1.0f : -1.0f);
                     faceObject = object;
                     lastFace = face;
                 }

@@ -293,7 +293,7 @@ inline uint64_t sphereHits(const Setup& k, const Group& ray, uint64_t live, Lane
 
 // intersectBox(box, Ray{origin, d}, 0, tMax, hit) lane by lane: the lanes that hit, in tHit their hit.t and in
 // face the face hit, 2·axis + 1 for the + face of the axis, 2·axis for the − face (hit.normal is
-// normalize(objectFromWorld.row[axis] · ±1)).
+// boxFaceNormal(box, axis, ±1)).
 // Origin: a Vec3 (one origin) or V3 (the group's own).
 template <class Origin>
 inline uint64_t boxHits(const BoxShape& box, const Origin& oWorld, const Group& ray, uint64_t live, LaneF& tHit,

@@ -166,8 +166,8 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
             }
         }
         const Vec3 d = r.ray.direction;
-        const Vec3 p = pointAt(r.ray, hit.t);
-        const Vec3 pError = hitPointError(r.ray, hit.t);
+        const HitPoint at = hitPointOn(scene, object, r.ray, hit);
+        const Vec3 p = at.p, pError = at.error;
         SurfacePoint surface = surfaceAt(scene, object, hit, p, materialHasTextures(m));
         applyTextures(scene, m, surface);
         const bool frontFacing = dot(d, surface.ng) < 0.0f;

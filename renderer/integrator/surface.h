@@ -18,6 +18,17 @@ TRAZO_HD SurfacePoint surfaceAt(const SceneView& scene, const ObjectRef& o, cons
     return visitObject(scene, o, [&](const auto& shape) { return objectSurface(scene, shape, shapeHit, p, wantUv); });
 }
 
+// Where an object's hit along `ray` is, with its error bound: the object kind's own computation from its surface
+// (objectHitPoint), so secondary rays leave by an offset that scales with the hit, not with the ray's origin.
+// hit.normal becomes the normal at that point (HitPoint), for everything shaded there.
+TRAZO_HD HitPoint hitPointOn(const SceneView& scene, const ObjectRef& o, const Ray& ray, SurfaceHit& hit) {
+    const ShapeHit shapeHit{hit.t, hit.normal, hit.triangle, hit.b1, hit.b2};
+    const HitPoint at =
+        visitObject(scene, o, [&](const auto& shape) { return objectHitPoint(scene, shape, ray, shapeHit); });
+    hit.normal = at.normal;
+    return at;
+}
+
 // m's colours times its textures at the surface's uv, and the normal map applied to s.n. Without uvs
 // the textures are ignored (flatten() warns about such objects).
 TRAZO_HD void applyTextures(const SceneView& scene, MaterialData& m, SurfacePoint& s) {

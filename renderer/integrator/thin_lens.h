@@ -39,7 +39,12 @@ TRAZO_HD Ray thinLensRay(const CameraFrame& c, float x, float y, float aperture,
     if (aperture == 0.0f) return pinhole;
     const Vec3 toFocus = pinhole.direction * (focalDistance / dot(pinhole.direction, c.forward));
     const Vec3 toLens = (c.right * lensX + c.up * lensY) * aperture;
-    return Ray{c.origin + toLens, normalize(toFocus - toLens)};
+    const Vec3 direction = toFocus - toLens;
+    // A focal distance beyond about 1e19 squares out of float: the same direction from both divided by it.
+    if (!(dot(direction, direction) < INFINITY))
+        return Ray{c.origin + toLens, normalize(pinhole.direction * (1.0f / dot(pinhole.direction, c.forward)) -
+                                                toLens * (1.0f / focalDistance))};
+    return Ray{c.origin + toLens, normalize(direction)};
 }
 
 }  // namespace trazo

@@ -22,6 +22,15 @@ struct BoxShape {
     Affine3 worldFromObject;
 };
 
+// The unit outward normal of the face on side `sign` (±1) of `axis`: the inverse transpose maps ±e_axis to ± row
+// `axis` of objectFromWorld. A box thinner than about 5e-20 has rows whose squares leave float: those are scaled
+// down first (only then, so every other box's normals keep their bits).
+TRAZO_HD Vec3 boxFaceNormal(const BoxShape& box, int axis, float sign) {
+    const Vec3 row = box.objectFromWorld.row[axis] * sign;
+    if (dot(row, row) <= 3.40282347e38f) return normalize(row);
+    return normalize(row * (1.0f / maxComponent(abs(row))));
+}
+
 // Nearest hit with tMin < t < tMax; fills hit.t and the unit outward normal. The box is closed: a
 // ray lying in a face's plane counts as inside that slab. From inside, the hit is the exit point.
 TRAZO_HD bool intersectBox(const BoxShape& box, const Ray& ray, float tMin, float tMax, ShapeHit& hit) {
@@ -70,8 +79,7 @@ TRAZO_HD bool intersectBox(const BoxShape& box, const Ray& ray, float tMin, floa
     } else {
         return false;
     }
-    // Normals map by the inverse transpose: objectFromWorldᵀ·(±e_axis) is ± row `axis` of the matrix.
-    hit.normal = normalize(box.objectFromWorld.row[axis] * sign);
+    hit.normal = boxFaceNormal(box, axis, sign);
     return true;
 }
 
@@ -111,6 +119,26 @@ TRAZO_HD SurfacePoint objectSurface(const SceneView&, const BoxShape& box, const
 }
 
 TRAZO_HD bool objectHasUvs(const SceneView&, const BoxShape&) { return true; }
+
+// The face's coordinate of o + t·d set exactly in object space (the face: the row of objectFromWorld the hit's
+// normal came from), mapped back to the world: off the face by the rounding of that map (pbrt-v4's
+// transformed-point bound) and of the two transforms' disagreement, wherever the ray came from.
+TRAZO_HD HitPoint objectHitPoint(const SceneView&, const BoxShape& box, const Ray& ray, const ShapeHit& hit) {
+    const HitPoint along = rayHitPoint(ray, hit.t, hit.normal);
+    int axis = 0;
+    float best = -1.0f, facing = 0.0f;
+    for (int i = 0; i < 3; ++i) {
+        const float cosine = dot(boxFaceNormal(box, i, 1.0f), hit.normal);
+        if (fabsf(cosine) > best) best = fabsf(cosine), axis = i, facing = cosine;
+    }
+    Vec3 q = box.objectFromWorld.applyToPoint(along.p);
+    q[axis] = facing > 0.0f ? 0.5f : -0.5f;
+    const Affine3& w = box.worldFromObject;
+    const Vec3 p = w.applyToPoint(q);
+    const Vec3 aq = abs(q);
+    const Vec3 reach(dot(abs(w.row[0]), aq), dot(abs(w.row[1]), aq), dot(abs(w.row[2]), aq));
+    return tighter(along, HitPoint{p, (reach + abs(w.translation)) * roundoff(6.0f), hit.normal});
+}
 
 inline Aabb objectBounds(const SceneView&, const BoxShape& box) {
     Aabb b;

@@ -214,6 +214,7 @@ TRAZO_HD_CALL bool intersectCsg(const CsgShape& csg, const CsgNodeData* nodes, c
             Vec3 n = normalize(leaf.objectFromWorld.applyTransposeToVector(csgLeafNormal(leaf.shape, pObject)));
             hit.t = e.t;
             hit.normal = e.flipped ? -n : n;
+            hit.triangle = e.leaf;  // the leaf whose surface it is, for objectHitPoint
             return true;
         }
     }
@@ -237,6 +238,35 @@ TRAZO_HD SurfacePoint objectSurface(const SceneView&, const CsgShape&, const Sha
 }
 
 TRAZO_HD bool objectHasUvs(const SceneView&, const CsgShape&) { return false; }
+
+// o + t·d put back on the leaf's canonical surface in its object space (the face, side or cap csgLeafNormal
+// picks), mapped back to the world: off it by the rounding of that map, wherever the ray came from. The hit's
+// normal is already the one at this point: intersectCsg takes it from the same object-space point.
+TRAZO_HD HitPoint objectHitPoint(const SceneView& scene, const CsgShape& csg, const Ray& ray, const ShapeHit& hit) {
+    const HitPoint along = rayHitPoint(ray, hit.t, hit.normal);
+    const CsgNodeData& leaf = scene.csgNodes[csg.firstNode + hit.triangle];
+    Vec3 q = leaf.objectFromWorld.applyToPoint(along.p);
+    const Vec3 n = csgLeafNormal(leaf.shape, q);
+    if (leaf.shape == CsgLeafShape::Sphere) {
+        const float distance = length(q);
+        if (!(distance > 0.0f)) return along;
+        q = q / distance;
+    } else if (leaf.shape == CsgLeafShape::Box) {
+        for (int i = 0; i < 3; ++i)
+            if (n[i] != 0.0f) q[i] = 0.5f * n[i];
+    } else if (n.y != 0.0f) {  // a cylinder's cap
+        q.y = n.y > 0.0f ? 1.0f : 0.0f;
+    } else {
+        const float r = sqrtf(q.x * q.x + q.z * q.z);
+        if (!(r > 0.0f)) return along;
+        q.x /= r, q.z /= r;
+    }
+    const Affine3 w = inverse(leaf.objectFromWorld);
+    const Vec3 p = w.applyToPoint(q);
+    const Vec3 aq = abs(q);
+    const Vec3 reach(dot(abs(w.row[0]), aq), dot(abs(w.row[1]), aq), dot(abs(w.row[2]), aq));
+    return tighter(along, HitPoint{p, (reach + abs(w.translation)) * roundoff(6.0f), hit.normal});
+}
 
 // The root's bounds: empty (min > max) for a solid that is empty everywhere.
 inline Aabb objectBounds(const SceneView& scene, const CsgShape& csg) {

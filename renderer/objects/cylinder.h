@@ -136,6 +136,28 @@ TRAZO_HD SurfacePoint objectSurface(const SceneView&, const CylinderShape& c, co
 
 TRAZO_HD bool objectHasUvs(const SceneView&, const CylinderShape&) { return true; }
 
+// o + t·d put back on the surface the hit's normal names: on a cap its height set exactly, on the side its
+// radial part scaled to the radius; off it by a few ulps of the base, the height and the radius.
+TRAZO_HD HitPoint objectHitPoint(const SceneView&, const CylinderShape& c, const Ray& ray, const ShapeHit& hit) {
+    const HitPoint along = rayHitPoint(ray, hit.t, hit.normal);
+    const Vec3 rel = along.p - c.base;
+    float height = dot(rel, c.axis);
+    Vec3 radial = rel - c.axis * height;
+    Vec3 normal = hit.normal;
+    const float towardsAxis = dot(hit.normal, c.axis);
+    if (fabsf(towardsAxis) > 0.5f) {
+        height = towardsAxis > 0.0f ? c.height : 0.0f;
+    } else {
+        const float r = length(radial);
+        if (!(r > 0.0f)) return along;
+        normal = radial * (1.0f / r);
+        radial = normal * c.radius;
+    }
+    const Vec3 p = c.base + c.axis * height + radial;
+    const Vec3 error = (abs(c.base) + abs(c.axis * height) + abs(radial) + abs(rel)) * roundoff(6.0f);
+    return tighter(along, HitPoint{p, error, normal});
+}
+
 inline Aabb objectBounds(const SceneView&, const CylinderShape& c) {
     // Each cap is a disk: along axis i it reaches r·√(1 − axisᵢ²) from its centre.
     const Vec3 reach = Vec3(std::sqrt(std::fmax(0.0f, 1.0f - c.axis.x * c.axis.x)),

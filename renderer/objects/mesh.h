@@ -10,6 +10,7 @@
 #include "accel/wide8_traverse.h"
 #include "accel/wide_bvh_node.h"
 #include "core/aabb.h"
+#include "core/ray.h"
 #include "core/vec3.h"
 #include "geometry/intersect_triangle_leaf.h"
 #include "geometry/surface_frame.h"
@@ -167,6 +168,16 @@ TRAZO_HD SurfacePoint objectSurface(const SceneView& scene, const MeshShape& mes
 }
 
 TRAZO_HD bool objectHasUvs(const SceneView&, const MeshShape& mesh) { return mesh.hasUvs != 0; }
+
+// The barycentric combination of the triangle's corners: on its plane to a few ulps of the weighted corners
+// (pbrt-v4's triangle bound), wherever the ray came from.
+TRAZO_HD HitPoint objectHitPoint(const SceneView& scene, const MeshShape&, const Ray& ray, const ShapeHit& hit) {
+    const MeshTriangle& tri = scene.triangles[hit.triangle];
+    const float b0 = 1.0f - hit.b1 - hit.b2;
+    const Vec3 w0 = tri.p0 * b0, w1 = tri.p1 * hit.b1, w2 = tri.p2 * hit.b2;
+    const HitPoint corners{w0 + w1 + w2, (abs(w0) + abs(w1) + abs(w2)) * roundoff(8.0f), hit.normal};
+    return tighter(rayHitPoint(ray, hit.t, hit.normal), corners);
+}
 
 inline Aabb objectBounds(const SceneView& scene, const MeshShape& mesh) {
     return wideNodeBounds(scene.meshNodes[mesh.nodeOffset]);
