@@ -388,6 +388,26 @@ TEST(AbsurdGeometry, RadiiAndScalesFrom1eMinus30To1e19Render) {
     for (const GeometryCase& c : cases) expectRenders(c);
 }
 
+// Values beyond what float squares, inside the bounds, that once rendered silently wrong: a box pane thinner than
+// 5e-20 lost its normals (black), a FocalDistance of 2e19 sent every lens ray nowhere (background), and a
+// RefractionIndex of 1.9e19 with Fresnel made F NaN (black). Now the pane is lit, the far focus sees the pane,
+// and the huge index reflects everything: a clear Fresnel pane shows the background it mirrors, exactly.
+TEST(AbsurdGeometry, ThinPanesFarFociAndHugeIndicesRenderRight) {
+    const std::string pane = "    Scale 100 100 ";
+    for (const char* thin : {"1e-19", "1e-25", "1e-30"})
+        expectRenders({std::string("PaneThin") + thin, geometryScene(block("Box", pane + thin + "\n")), Expect::Lit});
+    for (const char* focus : {"2e19", "1e30"}) {
+        const std::string camera = "0 0 5\n    Aperture 0.01\n    FocalDistance " + std::string(focus);
+        expectRenders({std::string("FocalDistance") + focus, geometryScene(block("Box", pane + "1\n"), camera),
+                       Expect::Lit});
+    }
+    for (const char* index : {"1.9e19", "1e30"}) {
+        const std::string glass = "Material\n{\n    Name glass\n    Opacity 0\n    Fresnel 1\n    RefractionIndex " +
+                                  std::string(index) + "\n}\nBox\n{\n    Material glass\n" + pane + "1\n}\n";
+        expectRenders({std::string("RefractionIndex") + index, geometryScene(glass), Expect::Background});
+    }
+}
+
 // A unit sphere seen from 1e20 and 1e30 away is far below a pixel; so is a scene of everything far away.
 TEST(AbsurdGeometry, ACameraFarAwaySeesTheBackground) {
     const std::string sphere = block("Sphere", "");

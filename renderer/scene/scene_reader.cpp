@@ -13,6 +13,7 @@
 #include "scene/block_table.h"
 #include "scene/csg_reader.h"
 #include "scene/obj_reader.h"
+#include "scene/param_format.h"
 #include "scene/source_file.h"
 #include "scene/texture_reader.h"
 #include "scene/transform_checks.h"
@@ -137,12 +138,25 @@ private:
         scene_.textures.push_back(std::move(t));
     }
 
+    // SPEC §6: where the material scatters below its surface, DiffuseColor is the walk's albedo, at most 1 (a
+    // larger one grows without bound over the walk's 256 scatterings). Reported at the DiffuseColor line.
+    void checkScatteringAlbedo(const Block& block, const Material& m) {
+        if (maxComponent(m.scatteringDistance) <= 0.0f || maxComponent(m.diffuseColor) <= 1.0f) return;
+        SourceLocation at = block.where;
+        for (const ParameterLine& p : block.parameters)
+            if (p.name == "DiffuseColor") at.line = p.line, at.column = p.column;
+        diags_.error(at, "DiffuseColor components must be at most 1 where ScatteringDistance is not 0 (it is the "
+                         "subsurface walk's albedo), got " + formatReal(m.diffuseColor.x) + " " +
+                         formatReal(m.diffuseColor.y) + " " + formatReal(m.diffuseColor.z));
+    }
+
     void readMaterial(const Block& block, size_t index) {
         MaterialDraft d;
         readParameters(block, materialTable(), d, diags_);
         Material& m = d.material;
         if (m.name.empty()) return;  // reported as missing
         if (!checkUnique("material", m.name, d.nameAt, declaredMaterials_, index)) return;
+        checkScatteringAlbedo(block, m);
         for (size_t s = 0; s < textureSlots().size(); ++s) {
             if (!d.textures[s].name.empty()) {
                 m.textures[s] = resolve(d.textures[s], "texture", textures_, declaredTextures_, index);

@@ -603,7 +603,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"FieldOfView", "Camera {\n FOV 180\n}\n",
                  "t.scene:2:6: error: FOV must be between 0 and 180 degrees (exclusive), got 180"},
         BadScene{"Opacity", "Material {\n Name m\n Opacity 1.5\n}\n",
-                 "t.scene:3:10: error: Opacity must be between 0 and 1, got 1.5"}),
+                 "t.scene:3:10: error: Opacity must be between 0 and 1, got 1.5"},
+        BadScene{"ScatteringAlbedo", "Material {\n Name m\n DiffuseColor 0.5 1e6 1\n ScatteringDistance 1 1 1\n}\n",
+                 "t.scene:3:2: error: DiffuseColor components must be at most 1 where ScatteringDistance is not 0 (it "
+                 "is the subsurface walk's albedo), got 0.5 1000000 1"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // Every scene and CSG file in scenes/ (the seed's, copied there, and any added later) must read without

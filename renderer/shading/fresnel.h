@@ -28,8 +28,10 @@ TRAZO_HD float dielectricFresnel(float cosThetaI, float n1, float n2) {
     const float c2 = fmaf(cosI, cosI, kMinus1 * (kMinus1 + 2.0f));
     if (!(c2 > 0.0f)) return 1.0f;  // total internal reflection (and the critical angle itself)
     const float c = sqrtf(c2);
-    const float rs = (cosI - c) / (cosI + c);
     const float kkCosI = k * k * cosI;
+    // An index ratio beyond about 1.8e19 squares out of float: there rs → −1 and rp → 1, so F → 1.
+    if (!(c2 < INFINITY && kkCosI < INFINITY)) return 1.0f;
+    const float rs = (cosI - c) / (cosI + c);
     const float rp = (kkCosI - c) / (kkCosI + c);
     return 0.5f * (rs * rs + rp * rp);
 }
