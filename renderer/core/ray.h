@@ -20,29 +20,6 @@ TRAZO_HD Vec3 hitPointError(const Ray& r, float t) {
     return (abs(r.origin) + abs(r.direction * t)) * kRelative;
 }
 
-// n units of roundoff (2⁻²⁴), pbrt-v4's γ(n) without its 1/(1 − nε): the bounds below use n with room to spare.
-TRAZO_HD constexpr float roundoff(float n) { return n * 5.96046448e-8f; }
-
-// A hit point, a conservative bound on each of its components' distance from the true surface, and the unit
-// outward geometric normal there. A point put back on a curved surface from o + t·d is not where the ray met it
-// (o + t·d errs along the ray by ulps of the ray's length): it takes the normal of where it is.
-struct HitPoint {
-    Vec3 p;
-    Vec3 error;
-    Vec3 normal;
-};
-
-TRAZO_HD HitPoint rayHitPoint(const Ray& r, float t, Vec3 normal) {
-    return HitPoint{pointAt(r, t), hitPointError(r, t), normal};
-}
-
-// Of two estimates of one hit point, the one whose error bound reaches less far along its normal: the surface's
-// own computation where the ray came from far away, o + t·d where it started close (a huge ground sphere beside
-// the camera, whose own bound is a few ulps of its radius).
-TRAZO_HD HitPoint tighter(const HitPoint& a, const HitPoint& b) {
-    return dot(abs(b.normal), b.error) < dot(abs(a.normal), a.error) ? b : a;
-}
-
 // The next float above / below v (pbrt-v4's NextFloatUp/Down): a bit step, where libm's nextafterf is a
 // call on the host. ±0 step to the smallest subnormal of that direction; ±∞ and NaN stay.
 TRAZO_HD float nextFloatUp(float v) {
@@ -68,9 +45,36 @@ TRAZO_HD Vec3 bumpedOrigin(Vec3 p, Vec3 offset) {
     return po;
 }
 
-TRAZO_HD Vec3 offsetRayOrigin(Vec3 p, Vec3 pError, Vec3 ng, Vec3 towards) {
-    const Vec3 offset = ng * offsetDistance(pError, ng);
-    return bumpedOrigin(p, dot(towards, ng) < 0.0f ? -offset : offset);
+TRAZO_HD Vec3 offsetRayOrigin(Vec3 p, float offset, Vec3 ng, Vec3 towards) {
+    return bumpedOrigin(p, dot(towards, ng) < 0.0f ? -(ng * offset) : ng * offset);
 }
+TRAZO_HD Vec3 offsetRayOrigin(Vec3 p, Vec3 pError, Vec3 ng, Vec3 towards) {
+    return offsetRayOrigin(p, offsetDistance(pError, ng), ng, towards);
+}
+
+// A hit point, the unit outward geometric normal there, and how far along it the point's error bound reaches
+// (offsetDistance): what a ray leaving the point needs. A point put back on a curved surface from o + t·d is not
+// where the ray met it (o + t·d errs along the ray by ulps of the ray's length): it takes the normal of where it is.
+struct HitPoint {
+    Vec3 p;
+    Vec3 normal;
+    float offset;
+};
+
+// n units of roundoff (2⁻²⁴), pbrt-v4's γ(n) without its 1/(1 − nε): the bounds use n with room to spare.
+TRAZO_HD constexpr float roundoff(float n) { return n * 5.96046448e-8f; }
+
+TRAZO_HD HitPoint boundedHitPoint(Vec3 p, Vec3 error, Vec3 normal) {
+    return HitPoint{p, normal, offsetDistance(error, normal)};
+}
+
+TRAZO_HD HitPoint rayHitPoint(const Ray& r, float t, Vec3 normal) {
+    return boundedHitPoint(pointAt(r, t), hitPointError(r, t), normal);
+}
+
+// Of two estimates of one hit point, the one whose bound reaches less far: the surface's own computation where
+// the ray came from far away, o + t·d where it started close (a huge ground sphere beside the camera, whose own
+// bound is a few ulps of its radius).
+TRAZO_HD HitPoint tighter(const HitPoint& a, const HitPoint& b) { return b.offset < a.offset ? b : a; }
 
 }  // namespace trazo

@@ -72,6 +72,7 @@ struct Flattener {
                                                             : CsgLeafShape::Cylinder;
             const Affine3 worldFromObject = then(primitiveFromCanonical(node), worldFromNode);
             data.objectFromWorld = inverse(worldFromObject);
+            data.worldFromObject = worldFromObject;
             b = leafBounds(data.shape, worldFromObject);
         }
         data.boundsMin = b.min;

@@ -874,19 +874,19 @@ void spawnFromHits(const ShapeCase& sc, Sampler& sampler, int count, SelfTally& 
         if (!sc.intersect(ray, 0, kInf, h)) continue;
         ++tally.hits;
         const HitPoint at = sc.hitPoint(ray, h);
-        const Vec3 p = at.p, error = at.error;
+        const Vec3 p = at.p;
         h.normal = at.normal;
         Vec3 n = h.normal;
         if (!sc.solid && sampler.uniform() < 0.5) n = -n;  // a rectangle is left from either side
         const Vec3 out = sampler.onSide(n);
-        const Ray leaving{offsetRayOrigin(p, error, h.normal, out), out};
+        const Ray leaving{offsetRayOrigin(p, at.offset, h.normal, out), out};
         ShapeHit again;
         if (sc.intersect(leaving, 0, kInf, again)) {
             if (tally.reHits++ == 0) {
                 std::ostringstream s;
                 s.precision(9);
                 s << "from " << describe(ray) << " t=" << h.t << " p=(" << p.x << ", " << p.y << ", " << p.z
-                  << ") err=(" << error.x << ", " << error.y << ", " << error.z << ") n=(" << n.x << ", " << n.y
+                  << ") offset=" << at.offset << " n=(" << n.x << ", " << n.y
                   << ", " << n.z << "); spawned " << describe(leaving) << " re-hit at t=" << again.t;
                 tally.firstReHit = s.str();
             }
@@ -896,7 +896,7 @@ void spawnFromHits(const ShapeCase& sc, Sampler& sampler, int count, SelfTally& 
         // side (an exit); a box or cylinder hit beside an edge may legitimately re-enter the next face.
         ++tally.inward;
         const Vec3 in = sampler.onSide(-h.normal);
-        const Ray entering{offsetRayOrigin(p, error, h.normal, in), in};
+        const Ray entering{offsetRayOrigin(p, at.offset, h.normal, in), in};
         Tally inward;
         ShapeHit far;
         compareOne(sc, entering, 0, kInf, inward, &far, true);
@@ -986,7 +986,7 @@ TEST(IntersectSelf, ThinSlabSeenFromFarAwayIsCrossedNotSteppedOver) {
         if (!intersectBox(pane, ray, 0.0f, kInf, h)) continue;
         const HitPoint at = objectHitPoint(SceneView{}, pane, ray, h);
         const Vec3 in = ray.direction;  // straight on, as a ray through glass of index 1
-        const Ray inside{offsetRayOrigin(at.p, at.error, h.normal, in), in};
+        const Ray inside{offsetRayOrigin(at.p, at.offset, h.normal, in), in};
         ShapeHit back;
         const bool exits = intersectBox(pane, inside, 0.0f, kInf, back) && dot(back.normal, in) > 0.0f &&
                            dot(back.normal, h.normal) < 0.0f;

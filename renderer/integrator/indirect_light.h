@@ -15,14 +15,27 @@
 
 namespace trazo {
 
-// The shading point at Q, an object's `hit` along `ray`, and in mq its material with textures applied.
+// The shading point at Q, an object's `hit` along `ray`, and in mq its material with textures applied: Q where the
+// object kind puts it (hitPointOn), for a ray from anywhere (the camera's).
 TRAZO_HD ShadingPoint shadingPointAt(const SceneView& scene, const Ray& ray, SurfaceHit hit, MaterialData& mq) {
     const ObjectRef& o = scene.objects[hit.object];
     mq = scene.materials[o.material];
     const HitPoint q = hitPointOn(scene, o, ray, hit);
     SurfacePoint sq = surfaceAt(scene, o, hit, q.p, materialHasTextures(mq));
     applyTextures(scene, mq, sq);
-    return facingShadingPoint(q.p, q.error, ray.direction, sq);
+    return facingShadingPoint(q.p, q.offset, ray.direction, sq);
+}
+
+// shadingPointAt for a ray that left a point of the scene (an indirect direction): Q = o + t·d, whose bound is then
+// already at the scene's own scale, as the kind's would be. Cheaper on the device, where the kind's computation
+// at every indirect hit put the indirect-light kernels over their spill budget (kernel_budget).
+TRAZO_HD ShadingPoint shadingPointAlong(const SceneView& scene, const Ray& ray, const SurfaceHit& hit,
+                                        MaterialData& mq) {
+    const ObjectRef& o = scene.objects[hit.object];
+    mq = scene.materials[o.material];
+    SurfacePoint sq = surfaceAt(scene, o, hit, pointAt(ray, hit.t), materialHasTextures(mq));
+    applyTextures(scene, mq, sq);
+    return facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), ray.direction, sq);
 }
 
 // What a direction's ray found at Q, an object's `hit` (j: the direction's index in the pass's block): Q's direct
@@ -31,7 +44,7 @@ template <FeatureMask F>
 TRAZO_HD Vec3 lightArrivingFrom(const SceneView& scene, const Ray& ray, const SurfaceHit& hit, const StrataKey& atQ,
                                 const StrataBlocks& blocks, uint32_t j, SampleStream& rng, uint32_t& rays) {
     MaterialData mq;
-    const ShadingPoint spq = shadingPointAt(scene, ray, hit, mq);
+    const ShadingPoint spq = shadingPointAlong(scene, ray, hit, mq);
     return directLight<F>(scene, spq, mq, atQ, blocks.lightAtIndirect, j, rng, rays) + mq.emissive;
 }
 
@@ -106,38 +119,43 @@ inline packet_detail::V3 bumpedOriginLanes(const packet_detail::V3& p, const pac
 }
 
 // Host: the shading points at the hits of `lanes` (bit k: traced[k], on an object whose surface is the hit's
-// normal: no textures, not a mesh) into q's points, in SIMD lanes, as shadingPointAt makes them there operation for
-// operation: p and its error bound from hitPointOn (one lane at a time: a dispatch over kinds), both normals the
-// hit's turned to face the ray (facingShadingPoint), the offset of the bound along ng and the origin above
-// (ShadingPoint's constructor). Groups of lanes are written whole: lanes outside `lanes` are to be set after.
-inline void facingPointsLanes(const SceneView& scene, PerRay<TracedRay>& traced, uint64_t lanes, PointLanes& q) {
+// normal: no textures, not a mesh) into q's points, in SIMD lanes, as shadingPointAlong makes them there operation
+// for operation: p = pointAt, both normals the hit's turned to face the ray (facingShadingPoint), the offset of
+// hitPointError's bound along ng and the origin above (ShadingPoint's constructor). Groups of lanes are written
+// whole: lanes outside `lanes` are to be set after.
+inline void facingPointsLanes(PerRay<TracedRay>& traced, uint64_t lanes, PointLanes& q) {
     using namespace packet_detail;
     if (!lanes) return;
     const int used = groupedLanes(lanes);
-    alignas(64) float dx[kPacketRays], dy[kPacketRays], dz[kPacketRays];  // the rays' directions,
-    alignas(64) float ex[kPacketRays], ey[kPacketRays], ez[kPacketRays];  // the hit points' error bounds
+    alignas(64) float ox[kPacketRays], oy[kPacketRays], oz[kPacketRays];  // the rays' origins,
+    alignas(64) float dx[kPacketRays], dy[kPacketRays], dz[kPacketRays];  // directions,
+    alignas(64) float ex[kPacketRays], ey[kPacketRays], ez[kPacketRays];  // hitPointError
     alignas(64) float hx[kPacketRays], hy[kPacketRays], hz[kPacketRays];  // and the hits' normals
+    alignas(64) float t[kPacketRays];
     for (int i = 0; i < used; ++i) {
         if (!(lanes >> i & 1u)) {
-            q.px[i] = q.py[i] = q.pz[i] = dx[i] = dy[i] = dz[i] = ex[i] = ey[i] = ez[i] = hx[i] = hy[i] = hz[i] = 0.0f;
+            ox[i] = oy[i] = oz[i] = dx[i] = dy[i] = dz[i] = ex[i] = ey[i] = ez[i] = hx[i] = hy[i] = hz[i] = t[i] = 0.0f;
             continue;
         }
-        TracedRay& r = traced[i];
-        const HitPoint at = hitPointOn(scene, scene.objects[r.hit.object], r.ray, r.hit);
-        q.px[i] = at.p.x, q.py[i] = at.p.y, q.pz[i] = at.p.z;
+        const TracedRay& r = traced[i];
+        const Vec3 e = hitPointError(r.ray, r.hit.t);
+        ox[i] = r.ray.origin.x, oy[i] = r.ray.origin.y, oz[i] = r.ray.origin.z;
         dx[i] = r.ray.direction.x, dy[i] = r.ray.direction.y, dz[i] = r.ray.direction.z;
-        ex[i] = at.error.x, ey[i] = at.error.y, ez[i] = at.error.z;
+        ex[i] = e.x, ey[i] = e.y, ez[i] = e.z;
         hx[i] = r.hit.normal.x, hy[i] = r.hit.normal.y, hz[i] = r.hit.normal.z;
+        t[i] = r.hit.t;
     }
     const auto store = [](float* to, LaneF v) { std::memcpy(to, &v, sizeof v); };
     for (int o = 0; o < used; o += kLanes) {
         const V3 d = PointLanes::lanes(dx, dy, dz, o), h = PointLanes::lanes(hx, hy, hz, o);
         const V3 e = PointLanes::lanes(ex, ey, ez, o);
-        const V3 p = PointLanes::lanes(q.px, q.py, q.pz, o);
+        const LaneF th = load(t + o);
+        const V3 p = {load(ox + o) + d.x * th, load(oy + o) + d.y * th, load(oz + o) + d.z * th};
         const LaneI front = dot(d, h) < 0.0f;
         const V3 ng = {front ? h.x : -h.x, front ? h.y : -h.y, front ? h.z : -h.z};
         const LaneF offset = dot(abs(ng), e);
         const V3 above = bumpedOriginLanes(p, {ng.x * offset, ng.y * offset, ng.z * offset});
+        store(q.px + o, p.x), store(q.py + o, p.y), store(q.pz + o, p.z);
         store(q.gx + o, ng.x), store(q.gy + o, ng.y), store(q.gz + o, ng.z);
         store(q.nx + o, ng.x), store(q.ny + o, ng.y), store(q.nz + o, ng.z);
         store(q.vx + o, -d.x), store(q.vy + o, -d.y), store(q.vz + o, -d.z);
@@ -148,7 +166,7 @@ inline void facingPointsLanes(const SceneView& scene, PerRay<TracedRay>& traced,
 
 // What the traced directions of `traced` (bit k of `active`: ray k) found, where they found an object (not the
 // sky, nor a light): Q's shading point and material in q's lane k (facingPointsLanes where it serves, else
-// shadingPointAt), and fromQ[k] = Direct(Q) + Ke(Q) with point lights only, the Qs' shadow rays traced together
+// shadingPointAlong), and fromQ[k] = Direct(Q) + Ke(Q) with point lights only, the Qs' shadow rays traced together
 // (directLightOfLanes). Returns those rays. lightArrivingFrom's values.
 inline uint64_t lightFromFoundPoints(const SceneView& scene, PerRay<TracedRay>& traced, uint64_t active,
                                      PointLanes& q, PerRay<Vec3>& fromQ, uint32_t& rays) {
@@ -164,7 +182,7 @@ inline uint64_t lightFromFoundPoints(const SceneView& scene, PerRay<TracedRay>& 
         if (o.kind != ObjectKind::Mesh && !materialHasTextures(*material[k])) plain |= 1ull << k;
     }
     if (!atObject) return 0;
-    facingPointsLanes(scene, traced, plain, q);
+    facingPointsLanes(traced, plain, q);
     PerRay<Vec3> emissive;
     const int used = packet_detail::groupedLanes(atObject);
     for (int k = 0; k < used; ++k) {
@@ -173,7 +191,7 @@ inline uint64_t lightFromFoundPoints(const SceneView& scene, PerRay<TracedRay>& 
             emissive[k] = material[k]->emissive;
         } else if (atObject >> k & 1u) {
             MaterialData m;
-            q.setPoint(k, shadingPointAt(scene, traced[k].ray, traced[k].hit, m));
+            q.setPoint(k, shadingPointAlong(scene, traced[k].ray, traced[k].hit, m));
             q.setMaterial(k, m);
             emissive[k] = m.emissive;
         } else {

@@ -18,7 +18,7 @@
 namespace trazo {
 namespace {
 
-// Two point lights; matte, glossy, specular-only and textured materials (the last shaded by shadingPointAt at Q,
+// Two point lights; matte, glossy, specular-only and textured materials (the last shaded by shadingPointAlong at Q,
 // the rest in lanes); objects twice at one place (ties).
 std::string extras() {
     return std::string("PointLight\n{\n    Position 1 6 5\n    Color 0.9 0.8 0.7\n}\n"
@@ -59,9 +59,9 @@ TEST(IndirectLight, TogetherIsOneByOneBitForBit) {
                         if (!intersectScene(scene.view, ray, INFINITY, hit) || hit.object == kNoObject) continue;
                         const ObjectRef& o = scene.view.objects[hit.object];
                         const MaterialData& m = scene.view.materials[o.material];
-                        const HitPoint at = hitPointOn(scene.view, o, ray, hit);
-                        const SurfacePoint s = surfaceAt(scene.view, o, hit, at.p, false);
-                        const ShadingPoint sp = facingShadingPoint(at.p, at.error, ray.direction, s);
+                        const SurfacePoint s = surfaceAt(scene.view, o, hit, pointAt(ray, hit.t), false);
+                        const ShadingPoint sp =
+                            facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), ray.direction, s);
                         const uint32_t pixel = py * camera.width + px;
                         const StrataKey strata{seed, pixel, target, kSampleTreeRoot};
                         const StrataBlock directions = strata.block(kGridIndirect, 2 * q * q, target);

@@ -195,6 +195,7 @@ inline void tracePacketFrom(const SceneView& scene, const Origins& origins, RayP
                 }
                 h.t = nearest.t[i];
                 h.normal = faceNormal;
+                h.triangle = uint32_t(face);
             } else {  // a sphere: the lanes computed intersectSphere's normal
                 h.t = nearest.t[i];
                 h.normal = Vec3(nearest.nx[i], nearest.ny[i], nearest.nz[i]);

@@ -167,7 +167,8 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         }
         const Vec3 d = r.ray.direction;
         const HitPoint at = hitPointOn(scene, object, r.ray, hit);
-        const Vec3 p = at.p, pError = at.error;
+        const Vec3 p = at.p;
+        const float offset = at.offset;
         SurfacePoint surface = surfaceAt(scene, object, hit, p, materialHasTextures(m));
         applyTextures(scene, m, surface);
         const bool frontFacing = dot(d, surface.ng) < 0.0f;
@@ -186,13 +187,13 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
             if (r.segments >= kMaxTransmissionSegments) continue;
             Vec3 out;
             if (!leaveSolid(d, -surface.n, surface.ng, m, settings.reflectionQuality, strata, rng, out)) continue;
-            push(PendingRay{Ray{offsetRayOrigin(p, pError, surface.ng, out), out}, weight, r.reflectionDepth,
+            push(PendingRay{Ray{offsetRayOrigin(p, offset, surface.ng, out), out}, weight, r.reflectionDepth,
                             r.segments + 1u, hashCombine(r.node, kBranchRefractedOut)});
             continue;
         }
 
         // (A walk's exit point faces the way the walk leaves: outwards, towards the lights.)
-        const ShadingPoint sp = facingShadingPoint(p, pError, walkExit ? -d : d, surface);
+        const ShadingPoint sp = facingShadingPoint(p, offset, walkExit ? -d : d, surface);
 
         // The reflected and transmitted rays go on the stack before this point is shaded, so that nothing but
         // the colour's weight stays live across the shadow and indirect rays (on a GPU, registers decide how
@@ -213,7 +214,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
             if (dot(dir, sp.ng) > 0.0f) {  // directions below the geometric surface contribute 0
                 Vec3 reflected = weight * m.specular * (a * m.opacity);
                 if (reflectsTransmitted) reflected += weight * (f * (1.0f - m.opacity));
-                push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, reflected, r.reflectionDepth + 1u, 0u,
+                push(PendingRay{Ray{offsetRayOrigin(p, offset, sp.ng, dir), dir}, reflected, r.reflectionDepth + 1u, 0u,
                                 hashCombine(r.node, kBranchReflected)});
             }
         }
@@ -224,7 +225,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
                                    settings.reflectionQuality, strata, rng, dir)) {
                 const Vec3 transmitted =
                     fresnel ? weight * ((1.0f - m.opacity) * (1.0f - f)) : weight * (1.0f - m.opacity);
-                push(PendingRay{Ray{offsetRayOrigin(p, pError, sp.ng, dir), dir}, transmitted, r.reflectionDepth,
+                push(PendingRay{Ray{offsetRayOrigin(p, offset, sp.ng, dir), dir}, transmitted, r.reflectionDepth,
                                 r.segments + 1u, hashCombine(r.node, kBranchRefractedIn)});
             }
         }

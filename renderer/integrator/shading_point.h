@@ -19,12 +19,14 @@ struct ShadingPoint {
     Vec3 above;  // host: offsetRayOrigin towards +ng, where nearly every shadow and indirect ray leaves
 #endif
 
-    TRAZO_HD ShadingPoint(Vec3 pIn, Vec3 pError, Vec3 ngIn, Vec3 nIn, Vec3 vIn)
-        : p(pIn), ng(ngIn), n(nIn), v(vIn), offset(offsetDistance(pError, ngIn)) {
+    TRAZO_HD ShadingPoint(Vec3 pIn, float offsetIn, Vec3 ngIn, Vec3 nIn, Vec3 vIn)
+        : p(pIn), ng(ngIn), n(nIn), v(vIn), offset(offsetIn) {
 #if !TRAZO_DEVICE_PATHS
         above = bumpedOrigin(p, ng * offset);
 #endif
     }
+    TRAZO_HD ShadingPoint(Vec3 pIn, Vec3 pError, Vec3 ngIn, Vec3 nIn, Vec3 vIn)
+        : ShadingPoint(pIn, offsetDistance(pError, ngIn), ngIn, nIn, vIn) {}
     // offsetRayOrigin(p, pError, ng, towards), bit for bit. The device recomputes it: a GPU thread's
     // registers are scarcer than its arithmetic (ptxas: caching it cost up to 12 registers a kernel).
     TRAZO_HD Vec3 rayOrigin(Vec3 towards) const {

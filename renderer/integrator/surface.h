@@ -50,9 +50,12 @@ TRAZO_HD void applyTextures(const SceneView& scene, MaterialData& m, SurfacePoin
 
 // The shading point at p for a ray along d, with both normals turned to face the ray (opaque insides,
 // open surfaces).
-TRAZO_HD ShadingPoint facingShadingPoint(Vec3 p, Vec3 pError, Vec3 d, const SurfacePoint& s) {
+TRAZO_HD ShadingPoint facingShadingPoint(Vec3 p, float offset, Vec3 d, const SurfacePoint& s) {
     const bool front = dot(d, s.ng) < 0.0f;
-    return ShadingPoint{p, pError, front ? s.ng : -s.ng, front ? s.n : -s.n, -d};
+    return ShadingPoint{p, offset, front ? s.ng : -s.ng, front ? s.n : -s.n, -d};
+}
+TRAZO_HD ShadingPoint facingShadingPoint(Vec3 p, Vec3 pError, Vec3 d, const SurfacePoint& s) {
+    return facingShadingPoint(p, offsetDistance(pError, s.ng), d, s);
 }
 
 }  // namespace trazo

@@ -80,6 +80,7 @@ TRAZO_HD bool intersectBox(const BoxShape& box, const Ray& ray, float tMin, floa
         return false;
     }
     hit.normal = boxFaceNormal(box, axis, sign);
+    hit.triangle = uint32_t(2 * axis + (sign > 0.0f ? 1 : 0));  // the face, for objectHitPoint
     return true;
 }
 
@@ -120,24 +121,18 @@ TRAZO_HD SurfacePoint objectSurface(const SceneView&, const BoxShape& box, const
 
 TRAZO_HD bool objectHasUvs(const SceneView&, const BoxShape&) { return true; }
 
-// The face's coordinate of o + t·d set exactly in object space (the face: the row of objectFromWorld the hit's
-// normal came from), mapped back to the world: off the face by the rounding of that map (pbrt-v4's
-// transformed-point bound) and of the two transforms' disagreement, wherever the ray came from.
+// The face's coordinate of o + t·d set exactly in object space (hit.triangle: the face, 2·axis + 1 for the +
+// face), mapped back to the world: off the face by the rounding of that map (pbrt-v4's transformed-point bound)
+// and of the two transforms' disagreement, wherever the ray came from.
 TRAZO_HD HitPoint objectHitPoint(const SceneView&, const BoxShape& box, const Ray& ray, const ShapeHit& hit) {
     const HitPoint along = rayHitPoint(ray, hit.t, hit.normal);
-    int axis = 0;
-    float best = -1.0f, facing = 0.0f;
-    for (int i = 0; i < 3; ++i) {
-        const float cosine = dot(boxFaceNormal(box, i, 1.0f), hit.normal);
-        if (fabsf(cosine) > best) best = fabsf(cosine), axis = i, facing = cosine;
-    }
     Vec3 q = box.objectFromWorld.applyToPoint(along.p);
-    q[axis] = facing > 0.0f ? 0.5f : -0.5f;
+    q[int(hit.triangle >> 1)] = hit.triangle & 1u ? 0.5f : -0.5f;
     const Affine3& w = box.worldFromObject;
     const Vec3 p = w.applyToPoint(q);
     const Vec3 aq = abs(q);
     const Vec3 reach(dot(abs(w.row[0]), aq), dot(abs(w.row[1]), aq), dot(abs(w.row[2]), aq));
-    return tighter(along, HitPoint{p, (reach + abs(w.translation)) * roundoff(6.0f), hit.normal});
+    return tighter(along, boundedHitPoint(p, (reach + abs(w.translation)) * roundoff(6.0f), hit.normal));
 }
 
 inline Aabb objectBounds(const SceneView&, const BoxShape& box) {

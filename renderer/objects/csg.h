@@ -32,6 +32,7 @@ struct CsgNodeData {
     CsgOp op;
     CsgLeafShape shape;      // leaves only
     Affine3 objectFromWorld;  // leaves only
+    Affine3 worldFromObject;  // leaves only: where objectHitPoint maps a point of the canonical shape back
     // World bounds of the sub-tree's result (a union of its leaves, the left operand for a difference,
     // the overlap for an intersection), and the tree links that let the sweep skip a missed sub-tree.
     Vec3 boundsMin, boundsMax;
@@ -242,7 +243,7 @@ TRAZO_HD bool objectHasUvs(const SceneView&, const CsgShape&) { return false; }
 // o + t·d put back on the leaf's canonical surface in its object space (the face, side or cap csgLeafNormal
 // picks), mapped back to the world: off it by the rounding of that map, wherever the ray came from. The hit's
 // normal is already the one at this point: intersectCsg takes it from the same object-space point.
-TRAZO_HD HitPoint objectHitPoint(const SceneView& scene, const CsgShape& csg, const Ray& ray, const ShapeHit& hit) {
+TRAZO_HD_CALL HitPoint objectHitPoint(const SceneView& scene, const CsgShape& csg, const Ray& ray, const ShapeHit& hit) {
     const HitPoint along = rayHitPoint(ray, hit.t, hit.normal);
     const CsgNodeData& leaf = scene.csgNodes[csg.firstNode + hit.triangle];
     Vec3 q = leaf.objectFromWorld.applyToPoint(along.p);
@@ -261,11 +262,11 @@ TRAZO_HD HitPoint objectHitPoint(const SceneView& scene, const CsgShape& csg, co
         if (!(r > 0.0f)) return along;
         q.x /= r, q.z /= r;
     }
-    const Affine3 w = inverse(leaf.objectFromWorld);
+    const Affine3& w = leaf.worldFromObject;
     const Vec3 p = w.applyToPoint(q);
     const Vec3 aq = abs(q);
     const Vec3 reach(dot(abs(w.row[0]), aq), dot(abs(w.row[1]), aq), dot(abs(w.row[2]), aq));
-    return tighter(along, HitPoint{p, (reach + abs(w.translation)) * roundoff(6.0f), hit.normal});
+    return tighter(along, boundedHitPoint(p, (reach + abs(w.translation)) * roundoff(6.0f), hit.normal));
 }
 
 // The root's bounds: empty (min > max) for a solid that is empty everywhere.

@@ -169,13 +169,16 @@ TRAZO_HD SurfacePoint objectSurface(const SceneView& scene, const MeshShape& mes
 
 TRAZO_HD bool objectHasUvs(const SceneView&, const MeshShape& mesh) { return mesh.hasUvs != 0; }
 
-// The barycentric combination of the triangle's corners: on its plane to a few ulps of the weighted corners
-// (pbrt-v4's triangle bound), wherever the ray came from.
-TRAZO_HD HitPoint objectHitPoint(const SceneView& scene, const MeshShape&, const Ray& ray, const ShapeHit& hit) {
+// The barycentric combination of the triangle's corners, wherever the ray came from. Its bound is a few ulps of
+// the corners' largest coordinate in every axis, not pbrt-v4's per-axis one: a ray leaving the point is tested
+// against the triangle in a frame sheared along that ray (intersect_triangle.h), which mixes the axes, so a point
+// exactly on a plane z = 0 with corners at 1e5 must still leave it by ulps of 1e5.
+TRAZO_HD_CALL HitPoint objectHitPoint(const SceneView& scene, const MeshShape&, const Ray& ray, const ShapeHit& hit) {
     const MeshTriangle& tri = scene.triangles[hit.triangle];
     const float b0 = 1.0f - hit.b1 - hit.b2;
-    const Vec3 w0 = tri.p0 * b0, w1 = tri.p1 * hit.b1, w2 = tri.p2 * hit.b2;
-    const HitPoint corners{w0 + w1 + w2, (abs(w0) + abs(w1) + abs(w2)) * roundoff(8.0f), hit.normal};
+    const Vec3 p = tri.p0 * b0 + tri.p1 * hit.b1 + tri.p2 * hit.b2;
+    const float scale = maxComponent(abs(tri.p0) + abs(tri.p1) + abs(tri.p2));
+    const HitPoint corners = boundedHitPoint(p, Vec3(scale * roundoff(8.0f)), hit.normal);
     return tighter(rayHitPoint(ray, hit.t, hit.normal), corners);
 }
 

@@ -140,7 +140,7 @@ TRAZO_HD bool objectHasUvs(const SceneView&, const SphereShape&) { return true; 
 
 // o + t·d pushed radially onto the sphere (pbrt-v4's reprojection): off it by a few ulps of the radius and of
 // the sum, wherever the ray came from.
-TRAZO_HD HitPoint objectHitPoint(const SceneView&, const SphereShape& s, const Ray& ray, const ShapeHit& hit) {
+TRAZO_HD_CALL HitPoint objectHitPoint(const SceneView&, const SphereShape& s, const Ray& ray, const ShapeHit& hit) {
     const HitPoint along = rayHitPoint(ray, hit.t, hit.normal);
     const Vec3 fromCentre = along.p - s.center;
     const float distance = length(fromCentre);
@@ -148,7 +148,7 @@ TRAZO_HD HitPoint objectHitPoint(const SceneView&, const SphereShape& s, const R
     const Vec3 outward = fromCentre * (1.0f / distance);
     const Vec3 rel = outward * s.radius;
     const Vec3 p = s.center + rel;
-    return tighter(along, HitPoint{p, abs(rel) * roundoff(6.0f) + abs(p) * roundoff(1.0f), outward});
+    return tighter(along, boundedHitPoint(p, abs(rel) * roundoff(6.0f) + abs(p) * roundoff(1.0f), outward));
 }
 
 inline Aabb objectBounds(const SceneView&, const SphereShape& s) {
