@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Installs every Debian package Trazo needs, then configures and builds it (Release, into build/).
+# Installs every Debian package Trazo needs, then configures it (Release, into build/) and builds what a first
+# image needs: trazo with its viewer and the scenes' generated assets. `cmake --build build` builds the rest
+# (the tests and benchmarks).
 # Usage: scripts/setup.sh [extra cmake arguments]   (TRAZO_SKIP_APT=1 skips the package step)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -8,7 +10,7 @@ packages=(build-essential cmake ninja-build pkg-config
   libglfw3-dev libimgui-dev libfreeimage-dev python3-glad libtinyobjloader-dev
   libgtest-dev libbenchmark-dev libcli11-dev libembree-dev povray
   xvfb xauth xdotool x11-apps libgl1-mesa-dri mesa-utils
-  slurm-wlm munge libxxhash-dev)
+  slurm-wlm munge libxxhash-dev ccache)
 
 if [ "${TRAZO_SKIP_APT:-0}" != 1 ]; then
   missing=()
@@ -34,4 +36,4 @@ if [ -x /usr/local/cuda/bin/nvcc ] && [ "${TRAZO_ENABLE_CUDA:-ON}" != OFF ]; the
   cuda_args+=(-DCMAKE_CUDA_COMPILER=/usr/local/cuda/bin/nvcc)
 fi
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${cuda_args[@]}" "$@"
-cmake --build build
+cmake --build build --target trazo trazo_scene_assets

@@ -35,16 +35,18 @@ bool cpuIsaSupported(CpuIsa isa) {
 #endif
 }
 
+// nullptr where the CPU lacks the instruction set or this build has no kernels for it (TRAZO_CPU_ISAS).
 const CpuKernels* cpuKernelsFor(CpuIsa isa) {
     if (!cpuIsaSupported(isa)) return nullptr;
     switch (isa) {
         case CpuIsa::Sse2: return &cpuKernelsSse2();
-#if TRAZO_CPU_ISA_X86
+#if TRAZO_CPU_BUILD_AVX2
         case CpuIsa::Avx2: return &cpuKernelsAvx2();
-        case CpuIsa::Avx512: return &cpuKernelsAvx512();
-#else
-        default: break;
 #endif
+#if TRAZO_CPU_BUILD_AVX512
+        case CpuIsa::Avx512: return &cpuKernelsAvx512();
+#endif
+        default: break;
     }
     return nullptr;
 }

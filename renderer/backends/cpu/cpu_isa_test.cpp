@@ -46,7 +46,7 @@ private:
 std::vector<CpuIsa> supportedIsas() {
     std::vector<CpuIsa> isas;
     for (CpuIsa isa : kCpuIsas) {
-        if (cpuIsaSupported(isa)) isas.push_back(isa);
+        if (cpuKernelsFor(isa)) isas.push_back(isa);
         else std::printf("cpu_isa: %s skipped: this CPU (or build) lacks it\n", cpuIsaName(isa));
     }
     return isas;
