@@ -20,7 +20,9 @@ TRAZO_HD SurfacePoint surfaceAt(const SceneView& scene, const ObjectRef& o, cons
 
 // Where an object's hit along `ray` is, with its error bound: the object kind's own computation from its surface
 // (objectHitPoint), so secondary rays leave by an offset that scales with the hit, not with the ray's origin.
-// hit.normal becomes the normal at that point (HitPoint), for everything shaded there.
+// hit.normal becomes the normal at that point (HitPoint), for everything shaded there. On the device the kinds'
+// objectHitPoint are called (TRAZO_HD_CALL), all but the box's: inlined, they held the indirect-light kernels'
+// registers across every hit (kernel_budget, scripts/kernel_resources.sh).
 TRAZO_HD HitPoint hitPointOn(const SceneView& scene, const ObjectRef& o, const Ray& ray, SurfaceHit& hit) {
     const ShapeHit shapeHit{hit.t, hit.normal, hit.triangle, hit.b1, hit.b2};
     const HitPoint at =
