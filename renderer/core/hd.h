@@ -7,16 +7,20 @@
 // shadow traversal into the top level's loop and crowd its registers (13% more instructions a shadow ray).
 // TRAZO_HD_HOT: inlined on the host too, for a small per-ray or per-node step that GCC would otherwise call out
 // of line from a large caller (the renderer's mesh traversal inside the top level's).
+// TRAZO_HD_DEVICE_CALL: called on the device, where inlining it at every call site would hold a kernel's registers
+// (an object kind's hit point), and inlined on the host, where GCC would otherwise call it out of line.
 #if defined(__CUDACC__)
 #define TRAZO_HD __host__ __device__ __forceinline__
 #define TRAZO_HD_CALL __host__ __device__ __noinline__ inline
 #define TRAZO_HD_HOST_CALL __host__ __device__ __forceinline__
 #define TRAZO_HD_HOT __host__ __device__ __forceinline__
+#define TRAZO_HD_DEVICE_CALL __host__ __device__ __noinline__ inline
 #else
 #define TRAZO_HD inline
 #define TRAZO_HD_CALL inline
 #define TRAZO_HD_HOST_CALL __attribute__((noinline)) inline
 #define TRAZO_HD_HOT inline __attribute__((always_inline))
+#define TRAZO_HD_DEVICE_CALL inline __attribute__((always_inline))
 #endif
 
 // Marks a point control never reaches (after a switch that returns for every enumerator).

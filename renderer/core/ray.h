@@ -45,7 +45,7 @@ TRAZO_HD Vec3 bumpedOrigin(Vec3 p, Vec3 offset) {
     return po;
 }
 
-TRAZO_HD Vec3 offsetRayOrigin(Vec3 p, float offset, Vec3 ng, Vec3 towards) {
+TRAZO_HD_HOT Vec3 offsetRayOrigin(Vec3 p, float offset, Vec3 ng, Vec3 towards) {
     return bumpedOrigin(p, dot(towards, ng) < 0.0f ? -(ng * offset) : ng * offset);
 }
 TRAZO_HD Vec3 offsetRayOrigin(Vec3 p, Vec3 pError, Vec3 ng, Vec3 towards) {
@@ -64,17 +64,17 @@ struct HitPoint {
 // n units of roundoff (2⁻²⁴), pbrt-v4's γ(n) without its 1/(1 − nε): the bounds use n with room to spare.
 TRAZO_HD constexpr float roundoff(float n) { return n * 5.96046448e-8f; }
 
-TRAZO_HD HitPoint boundedHitPoint(Vec3 p, Vec3 error, Vec3 normal) {
+TRAZO_HD_HOT HitPoint boundedHitPoint(Vec3 p, Vec3 error, Vec3 normal) {
     return HitPoint{p, normal, offsetDistance(error, normal)};
 }
 
-TRAZO_HD HitPoint rayHitPoint(const Ray& r, float t, Vec3 normal) {
+TRAZO_HD_HOT HitPoint rayHitPoint(const Ray& r, float t, Vec3 normal) {
     return boundedHitPoint(pointAt(r, t), hitPointError(r, t), normal);
 }
 
 // Of two estimates of one hit point, the one whose bound reaches less far: the surface's own computation where
 // the ray came from far away, o + t·d where it started close (a huge ground sphere beside the camera, whose own
 // bound is a few ulps of its radius).
-TRAZO_HD HitPoint tighter(const HitPoint& a, const HitPoint& b) { return b.offset < a.offset ? b : a; }
+TRAZO_HD_HOT HitPoint tighter(const HitPoint& a, const HitPoint& b) { return b.offset < a.offset ? b : a; }
 
 }  // namespace trazo

@@ -143,7 +143,7 @@ TEST(OccludedPacket, CellsShadedTogetherAsOneByOne) {
             if (isBlack(normal)) normal = Vec3(0.0f, 1.0f, 0.0f);
             const Vec3 v = normalize(normal + Vec3(unit(rng), unit(rng), unit(rng)) * 0.8f);
             const Vec3 n = normalize(normal + Vec3(unit(rng), unit(rng), unit(rng)) * 0.3f);
-            const ShadingPoint sp(p, Vec3(1e-6f) * (1.0f + maxComponent(abs(p))), normal, n, v);
+            const ShadingPoint sp(p, offsetDistance(Vec3(1e-6f) * (1.0f + maxComponent(abs(p))), normal), normal, n, v);
             const PointBrdf brdf(sp, m);
             const StrataKey strata{seed, uint32_t(point), uint32_t(point % 3), 1u};
             const uint32_t target = std::max(kMinShadowPacket, 1 + uint32_t(rng() % gridCells));

@@ -14,7 +14,7 @@ struct ShadingPoint {
     Vec3 ng;       // geometric normal turned towards the viewer
     Vec3 n;        // shading normal turned towards the viewer
     Vec3 v;        // towards the viewer
-    float offset;  // offsetDistance of p's error bound along ng
+    float offset;  // how far along ng p's error bound reaches (offsetDistance, HitPoint::offset)
 #if !TRAZO_DEVICE_PATHS
     Vec3 above;  // host: offsetRayOrigin towards +ng, where nearly every shadow and indirect ray leaves
 #endif
@@ -25,9 +25,7 @@ struct ShadingPoint {
         above = bumpedOrigin(p, ng * offset);
 #endif
     }
-    TRAZO_HD ShadingPoint(Vec3 pIn, Vec3 pError, Vec3 ngIn, Vec3 nIn, Vec3 vIn)
-        : ShadingPoint(pIn, offsetDistance(pError, ngIn), ngIn, nIn, vIn) {}
-    // offsetRayOrigin(p, pError, ng, towards), bit for bit. The device recomputes it: a GPU thread's
+    // offsetRayOrigin(p, offset, ng, towards), bit for bit. The device recomputes it: a GPU thread's
     // registers are scarcer than its arithmetic (ptxas: caching it cost up to 12 registers a kernel).
     TRAZO_HD Vec3 rayOrigin(Vec3 towards) const {
         const bool below = dot(towards, ng) < 0.0f;

@@ -22,8 +22,9 @@ TRAZO_HD SurfacePoint surfaceAt(const SceneView& scene, const ObjectRef& o, cons
 // (objectHitPoint), so secondary rays leave by an offset that scales with the hit, not with the ray's origin.
 // hit.normal becomes the normal at that point (HitPoint), for everything shaded there. On the device the kinds'
 // objectHitPoint are called (TRAZO_HD_CALL), all but the box's: inlined, they held the indirect-light kernels'
-// registers across every hit (kernel_budget, scripts/kernel_resources.sh).
-TRAZO_HD HitPoint hitPointOn(const SceneView& scene, const ObjectRef& o, const Ray& ray, SurfaceHit& hit) {
+// registers across every hit (kernel_budget, scripts/kernel_resources.sh); on the host all are inlined, as this
+// is (called out of line by GCC's choice, they cost scene 6 a quarter of its time).
+TRAZO_HD_HOT HitPoint hitPointOn(const SceneView& scene, const ObjectRef& o, const Ray& ray, SurfaceHit& hit) {
     const ShapeHit shapeHit{hit.t, hit.normal, hit.triangle, hit.b1, hit.b2};
     const HitPoint at =
         visitObject(scene, o, [&](const auto& shape) { return objectHitPoint(scene, shape, ray, shapeHit); });
@@ -52,7 +53,7 @@ TRAZO_HD void applyTextures(const SceneView& scene, MaterialData& m, SurfacePoin
 
 // The shading point at p for a ray along d, with both normals turned to face the ray (opaque insides,
 // open surfaces).
-TRAZO_HD ShadingPoint facingShadingPoint(Vec3 p, float offset, Vec3 d, const SurfacePoint& s) {
+TRAZO_HD_HOT ShadingPoint facingShadingPoint(Vec3 p, float offset, Vec3 d, const SurfacePoint& s) {
     const bool front = dot(d, s.ng) < 0.0f;
     return ShadingPoint{p, offset, front ? s.ng : -s.ng, front ? s.n : -s.n, -d};
 }

@@ -243,7 +243,7 @@ TRAZO_HD bool objectHasUvs(const SceneView&, const CsgShape&) { return false; }
 // o + t·d put back on the leaf's canonical surface in its object space (the face, side or cap csgLeafNormal
 // picks), mapped back to the world: off it by the rounding of that map, wherever the ray came from. The hit's
 // normal is already the one at this point: intersectCsg takes it from the same object-space point.
-TRAZO_HD_CALL HitPoint objectHitPoint(const SceneView& scene, const CsgShape& csg, const Ray& ray, const ShapeHit& hit) {
+TRAZO_HD_DEVICE_CALL HitPoint objectHitPoint(const SceneView& scene, const CsgShape& csg, const Ray& ray, const ShapeHit& hit) {
     const HitPoint along = rayHitPoint(ray, hit.t, hit.normal);
     const CsgNodeData& leaf = scene.csgNodes[csg.firstNode + hit.triangle];
     Vec3 q = leaf.objectFromWorld.applyToPoint(along.p);

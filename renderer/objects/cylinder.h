@@ -138,7 +138,7 @@ TRAZO_HD bool objectHasUvs(const SceneView&, const CylinderShape&) { return true
 
 // o + t·d put back on the surface the hit's normal names: on a cap its height set exactly, on the side its
 // radial part scaled to the radius; off it by a few ulps of the base, the height and the radius.
-TRAZO_HD_CALL HitPoint objectHitPoint(const SceneView&, const CylinderShape& c, const Ray& ray, const ShapeHit& hit) {
+TRAZO_HD_DEVICE_CALL HitPoint objectHitPoint(const SceneView&, const CylinderShape& c, const Ray& ray, const ShapeHit& hit) {
     const HitPoint along = rayHitPoint(ray, hit.t, hit.normal);
     const Vec3 rel = along.p - c.base;
     float height = dot(rel, c.axis);

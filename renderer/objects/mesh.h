@@ -173,7 +173,7 @@ TRAZO_HD bool objectHasUvs(const SceneView&, const MeshShape& mesh) { return mes
 // the corners' largest coordinate in every axis, not pbrt-v4's per-axis one: a ray leaving the point is tested
 // against the triangle in a frame sheared along that ray (intersect_triangle.h), which mixes the axes, so a point
 // exactly on a plane z = 0 with corners at 1e5 must still leave it by ulps of 1e5.
-TRAZO_HD_CALL HitPoint objectHitPoint(const SceneView& scene, const MeshShape&, const Ray& ray, const ShapeHit& hit) {
+TRAZO_HD_DEVICE_CALL HitPoint objectHitPoint(const SceneView& scene, const MeshShape&, const Ray& ray, const ShapeHit& hit) {
     const MeshTriangle& tri = scene.triangles[hit.triangle];
     const float b0 = 1.0f - hit.b1 - hit.b2;
     const Vec3 p = tri.p0 * b0 + tri.p1 * hit.b1 + tri.p2 * hit.b2;

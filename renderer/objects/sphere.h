@@ -140,7 +140,7 @@ TRAZO_HD bool objectHasUvs(const SceneView&, const SphereShape&) { return true; 
 
 // o + t·d pushed radially onto the sphere (pbrt-v4's reprojection): off it by a few ulps of the radius and of
 // the sum, wherever the ray came from.
-TRAZO_HD_CALL HitPoint objectHitPoint(const SceneView&, const SphereShape& s, const Ray& ray, const ShapeHit& hit) {
+TRAZO_HD_DEVICE_CALL HitPoint objectHitPoint(const SceneView&, const SphereShape& s, const Ray& ray, const ShapeHit& hit) {
     const HitPoint along = rayHitPoint(ray, hit.t, hit.normal);
     const Vec3 fromCentre = along.p - s.center;
     const float distance = length(fromCentre);
