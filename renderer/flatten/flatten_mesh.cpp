@@ -48,7 +48,7 @@ uint64_t hashCorner(const MeshData::Corner& k) {
 // Numbers the distinct (position, normal, uv) corners: out[i] is corner i's number, in order of first
 // appearance. An open-addressing table of corner indices (4 bytes a slot, kept at most half full) instead
 // of a node-based map: a million-triangle mesh has three million corners.
-std::vector<uint32_t> numberDistinctCorners(const std::vector<MeshData::Corner>& corners, uint32_t& distinct) {
+std::vector<uint32_t> numberDistinctCorners(const MeshCorners& corners, uint32_t& distinct) {
     std::vector<uint32_t> number(corners.size());
     size_t capacity = 1024;
     while (capacity < corners.size() / 2) capacity *= 2;  // most meshes have about a sixth as many vertices
@@ -64,7 +64,7 @@ std::vector<uint32_t> numberDistinctCorners(const std::vector<MeshData::Corner>&
         }
     };
     for (uint32_t i = 0; i < (uint32_t)corners.size(); ++i) {
-        const MeshData::Corner& c = corners[i];
+        const MeshData::Corner c = corners[i];
         const size_t mask = table.size() - 1;
         size_t slot = hashCorner(c) & mask;
         for (;; slot = (slot + 1) & mask) {
@@ -124,17 +124,19 @@ public:
             const size_t positionCount = positions_.size();
             auto accumulate = [&](size_t ownedBegin, size_t ownedEnd) {
                 for (size_t t = 0; t < triangleCount; ++t) {
-                    const MeshData::Corner* c = &data.corners[3 * t];
-                    const bool mine[3] = {(size_t)c[0].position - ownedBegin < ownedEnd - ownedBegin,
-                                          (size_t)c[1].position - ownedBegin < ownedEnd - ownedBegin,
-                                          (size_t)c[2].position - ownedBegin < ownedEnd - ownedBegin};
+                    const size_t position[3] = {(size_t)data.corners.position(3 * t),
+                                                (size_t)data.corners.position(3 * t + 1),
+                                                (size_t)data.corners.position(3 * t + 2)};
+                    const bool mine[3] = {position[0] - ownedBegin < ownedEnd - ownedBegin,
+                                          position[1] - ownedBegin < ownedEnd - ownedBegin,
+                                          position[2] - ownedBegin < ownedEnd - ownedBegin};
                     if (!mine[0] && !mine[1] && !mine[2]) continue;
                     const MeshTriangle tri = triangle(t);
                     const Vec3 face = normalizeOr(cross(tri.p1 - tri.p0, tri.p2 - tri.p0), Vec3(0.0f));
                     const Vec3 p[3] = {tri.p0, tri.p1, tri.p2};
                     for (int k = 0; k < 3; ++k)
                         if (mine[k])
-                            computedNormals_[c[k].position] += face * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+                            computedNormals_[position[k]] += face * cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
                 }
             };
             if (triangleCount >= 65536) parallelChunks(positionCount, accumulate);  // every thread walks them all
@@ -170,9 +172,9 @@ public:
     }
 
     MeshTriangle triangle(size_t t) const {
-        const MeshData::Corner* c = &data_.corners[3 * t];
-        return {positions_[(size_t)c[0].position], positions_[(size_t)c[1].position],
-                positions_[(size_t)c[2].position]};
+        const MeshCorners& c = data_.corners;
+        return {positions_[(size_t)c.position(3 * t)], positions_[(size_t)c.position(3 * t + 1)],
+                positions_[(size_t)c.position(3 * t + 2)]};
     }
 
     TriangleCorners corners(size_t t) const {
@@ -180,7 +182,7 @@ public:
         const MeshTriangle tri = triangle(t);
         const Vec3 face = normalizeOr(cross(tri.p1 - tri.p0, tri.p2 - tri.p0), Vec3(0.0f, 1.0f, 0.0f));
         for (int k = 0; k < 3; ++k) {
-            const MeshData::Corner& c = data_.corners[3 * t + k];
+            const MeshData::Corner c = data_.corners[3 * t + k];
             MeshCorner& mc = out.corner[k];
             const Vec3 n0 = data_.hasNormals
                                 ? objectFromWorld_.applyTransposeToVector(data_.normals[(size_t)c.normal])
@@ -228,12 +230,18 @@ uint32_t appendShape(const Bvh& bvh, uint32_t first, uint32_t count, bool hasUvs
     return (uint32_t)out.meshes.size() - 1;
 }
 
-// Hands the pages of freed heap blocks back to the system. glibc raises its mmap threshold as large
-// blocks are freed (up to 32 MB), so the builder's temporaries of a large mesh end up in the heap, where
-// free() keeps their pages resident; the triangles and corners written next would be counted on top.
-void releaseFreedHeap() {
+// Hands the pages of freed heap blocks back to the system after the temporaries of a mesh, or meshes, of
+// `triangles` triangles were freed. glibc raises its mmap threshold as large blocks are freed (up to 32 MB),
+// so a large mesh's temporaries (the BVH builder's, the shading's, widenBvh's) end up in the heap, where
+// free() keeps their pages resident; what is allocated next would be counted on top. Below
+// kReleaseHeapTriangles they are too small to matter, and malloc_trim walks every free chunk of the heap
+// (0.2 ms on a fragmented one), which a scene of many small meshes would pay for each.
+constexpr size_t kReleaseHeapTriangles = size_t(1) << 16;
+void releaseFreedHeap(size_t triangles) {
 #if defined(__GLIBC__)
-    malloc_trim(0);
+    if (triangles >= kReleaseHeapTriangles) malloc_trim(0);
+#else
+    (void)triangles;
 #endif
 }
 
@@ -247,10 +255,14 @@ uint32_t appendInBvhOrder(uint32_t count, bool hasUvs, SceneArrays& out, BoundsF
     uint32_t index;
     {  // the binary BVH and the builder's arrays are gone before the triangles are written
         Bvh bvh = buildBvh(count, bounds, triangleBvhOptions());
+        // collapseBvh reserves about twice the nodes it makes, where the builder's temporaries lay: their pages
+        // go back first, or that spare capacity would keep them resident as long as the scene's arrays (6 MB for
+        // a million triangles, at the peak).
+        releaseFreedHeap(count);
         index = appendShape(bvh, (uint32_t)first, count, hasUvs, out);
         order = std::move(bvh.primitiveOrder);
     }
-    releaseFreedHeap();
+    releaseFreedHeap(count);
     out.triangles.resize(first + count);
     out.triangleCorners.resize(first + count);
     parallelChunks(count, [&](size_t b, size_t e) {
@@ -291,13 +303,20 @@ uint32_t appendMesh(const PreparedMesh& mesh, SceneArrays& out) {
 }
 
 uint32_t appendMesh(const MeshData& data, const Affine3& worldFromObject, SceneArrays& out) {
-    const MeshShading shading(data, worldFromObject);
-    return appendInBvhOrder(
-        (uint32_t)(data.corners.size() / 3), data.hasUvs, out, [&](uint32_t t) { return shading.bounds(t); },
-        [&](size_t k, uint32_t t) {
-            out.triangles[k] = shading.triangle(t);
-            out.triangleCorners[k] = shading.corners(t);
-        });
+    uint32_t index;
+    {
+        const MeshShading shading(data, worldFromObject);
+        index = appendInBvhOrder(
+            (uint32_t)(data.corners.size() / 3), data.hasUvs, out, [&](uint32_t t) { return shading.bounds(t); },
+            [&](size_t k, uint32_t t) {
+                out.triangles[k] = shading.triangle(t);
+                out.triangleCorners[k] = shading.corners(t);
+            });
+    }
+    // The shading's world positions and normals and the BVH order (16 MB for a million triangles) were freed
+    // into the heap: without this their pages stay resident through the upload, the process's peak.
+    releaseFreedHeap(data.corners.size() / 3);
+    return index;
 }
 
 size_t meshNodeCount(const SceneArrays& arrays, uint32_t shape) {
@@ -348,22 +367,31 @@ void widenMeshBvhs(SceneArrays& arrays, EightWideMeshes& out, uint32_t groupLeav
     static_assert(kBvhMaxLeafSize == 4, "a leaf's triangles fit one four-lane block");
     out.nodes.clear();
     out.blocks.clear();
+    if (arrays.meshes.empty()) return;
     size_t leaves = 0;  // the four-wide trees' leaves: at least as many as the blocks they pack into
     for (const WideBvhNode& node : arrays.meshNodes)
         for (uint32_t ref : node.child) leaves += ref != kBvhEmptyLane && bvhIsLeaf(ref);
     out.blocks.reserve(leaves);
     out.nodes.reserve(arrays.meshNodes.size());  // an eight-wide tree has fewer nodes than its four-wide one
+    // Every mesh's tree first, their leaf runs in one list (each four-wide leaf is in one run)...
     std::vector<uint32_t> runLeaves;
+    runLeaves.reserve(leaves);
     for (uint32_t i = 0; i < arrays.meshes.size(); ++i) {
         MeshShape& shape = arrays.meshes[i];
         shape.nodeOffset8 = (uint32_t)out.nodes.size();
         shape.anyHit8 = shape.triangleCount >= anyHit8Triangles;
-        runLeaves.clear();
         widenBvh(arrays.meshNodes.data() + shape.nodeOffset, meshNodeCount(arrays, i), out.nodes, &runLeaves,
                  groupLeaves);
+    }
+    // ...then the blocks, the largest array, once widenBvh's temporaries (16 MB for a million triangles, freed
+    // into the heap) have handed their pages back: on top of the scene's arrays they made the process's peak.
+    releaseFreedHeap(arrays.triangles.size());
+    for (uint32_t i = 0; i < arrays.meshes.size(); ++i) {
+        const MeshShape& shape = arrays.meshes[i];
+        const size_t end = i + 1 < arrays.meshes.size() ? arrays.meshes[i + 1].nodeOffset8 : out.nodes.size();
         const MeshTriangle* triangles = arrays.triangles.data() + shape.triangleOffset;
         // Blocks in the order of the nodes that name them: a node's runs lie side by side.
-        for (size_t n = shape.nodeOffset8; n < out.nodes.size(); ++n)
+        for (size_t n = shape.nodeOffset8; n < end; ++n)
             for (uint32_t& ref : out.nodes[n].child)
                 if (ref != kBvhEmptyLane && bvhIsLeaf(ref))
                     ref = appendRunBlocks(ref, runLeaves, triangles, out.blocks);

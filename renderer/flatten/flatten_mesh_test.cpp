@@ -223,7 +223,7 @@ TEST(AppendMesh, OneStepEqualsPrepareThenAppendByteForByte) {
 // breaks it instead of reading past its arrays.
 TEST(PrepareMeshDeathTest, AssertsTheObjMeshContract) {
     MeshData m = quad(false);
-    m.corners[4].normal = 7;  // one normal, index 7
+    m.corners.set(4, {m.corners.position(4), 7, m.corners.uv(4)});  // one normal, index 7
     EXPECT_DEATH(prepareMesh(m, Affine3{}), "contract");
 }
 #endif

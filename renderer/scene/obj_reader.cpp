@@ -433,6 +433,16 @@ void joinParts(MeshBuilder<std::allocator>& first, const MeshBuilder<PageAllocat
     }
 }
 
+// The parsed corners as MeshData keeps them, `corners` freed (they are three times the size of a file's
+// position-only columns, and the file's text is still held).
+MeshCorners cornerColumns(std::vector<MeshData::Corner>&& corners) {
+    MeshCorners columns;
+    columns.reserve(corners.size());
+    for (const MeshData::Corner& c : corners) columns.push_back(c);
+    std::vector<MeshData::Corner>().swap(corners);
+    return columns;
+}
+
 // ---- The contract of obj_reader.h, checked in this one place.
 
 struct Violation {
@@ -478,7 +488,7 @@ void checkMesh(const MeshData& m, bool partialAttributes, size_t most, std::vect
             return;
     const bool has[3] = {true, m.hasNormals, m.hasUvs};
     for (size_t i = 0; i < m.corners.size(); ++i) {
-        const MeshData::Corner& c = m.corners[i];
+        const MeshData::Corner c = m.corners[i];
         const int32_t index[3] = {c.position, c.normal, c.uv};
         for (int a = 0; a < 3; ++a) {
             const bool ok = inRange(index[a], counts[a]) ? has[a] || partialAttributes
@@ -504,7 +514,7 @@ std::string describe(const Violation& v, const MeshData& m) {
         case Violation::BadValue:
             return std::string(kWhat[v.attribute]) + " " + std::to_string(v.ordinal) + " is not finite";
         case Violation::BadIndex: {
-            const MeshData::Corner& c = m.corners[v.ordinal];
+            const MeshData::Corner c = m.corners[v.ordinal];
             const int32_t index = v.attribute == kPosition ? c.position : v.attribute == kNormal ? c.normal : c.uv;
             const bool flagged = v.attribute == kNormal ? m.hasNormals : m.hasUvs;
             std::string s = "corner " + std::to_string(v.ordinal) + ": " + kWhat[v.attribute] + " index " +
@@ -705,7 +715,7 @@ std::shared_ptr<const MeshData> readObjText(const std::string& text, const std::
     mesh->positions = std::move(builder.positions);
     mesh->normals = std::move(builder.normals);
     mesh->uvs = std::move(builder.uvs);
-    mesh->corners = std::move(builder.corners);
+    mesh->corners = cornerColumns(std::move(builder.corners));
     mesh->hasNormals = builder.allNormals;
     mesh->hasUvs = builder.allUvs;
 
@@ -726,12 +736,8 @@ std::shared_ptr<const MeshData> readObjText(const std::string& text, const std::
         return nullptr;
     }
     // A partial attribute is treated as absent, so that consumers need only the two flags.
-    if (!mesh->hasNormals || !mesh->hasUvs) {
-        for (MeshData::Corner& c : mesh->corners) {
-            if (!mesh->hasNormals) c.normal = kAbsent;
-            if (!mesh->hasUvs) c.uv = kAbsent;
-        }
-    }
+    if (!mesh->hasNormals) mesh->corners.dropNormals();
+    if (!mesh->hasUvs) mesh->corners.dropUvs();
     assert(objMeshContractViolation(*mesh).empty());
     return mesh;
 }

@@ -100,8 +100,72 @@ TEST(ObjReader, MissingNormalsAndUvs) {
         readObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 1 3 2\n", "p.obj", diags);
     ASSERT_TRUE(partial);
     EXPECT_FALSE(partial->hasNormals);
-    for (const auto& c : partial->corners) EXPECT_EQ(c.normal, -1);
+    for (const MeshData::Corner c : partial->corners) EXPECT_EQ(c.normal, -1);
     EXPECT_FALSE(diags.hasErrors());
+
+    // An attribute no corner keeps takes no memory: 4 bytes a corner for positions only, 12 with both.
+    EXPECT_EQ(plain->corners.heapBytes(), 4 * plain->corners.size());
+    EXPECT_EQ(partial->corners.heapBytes(), 4 * partial->corners.size());
+    const auto both =
+        readObjText("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\nf 1/1/1 2/1/1 3/1/1\n", "both.obj", diags);
+    ASSERT_TRUE(both);
+    EXPECT_EQ(both->corners.heapBytes(), 12 * both->corners.size());
+}
+
+// MeshCorners keeps a column per attribute, made at the first corner that has one: whatever the order of
+// pushes, sets, pops and drops, it reads as the list of corners stored one by one would.
+TEST(MeshCorners, ReadsAsTheListOfItsCorners) {
+    MeshCorners corners;
+    std::vector<MeshData::Corner> model;
+    auto expectSame = [&](int step) {
+        ASSERT_EQ(corners.size(), model.size()) << "step " << step;
+        for (size_t i = 0; i < model.size(); ++i) {
+            const MeshData::Corner c = corners[i];
+            EXPECT_EQ(c.position, model[i].position) << "step " << step << ", corner " << i;
+            EXPECT_EQ(c.normal, model[i].normal) << "step " << step << ", corner " << i;
+            EXPECT_EQ(c.uv, model[i].uv) << "step " << step << ", corner " << i;
+            EXPECT_EQ(corners.normal(i), model[i].normal);
+            EXPECT_EQ(corners.uv(i), model[i].uv);
+        }
+    };
+    uint32_t state = 12345;
+    auto next = [&](uint32_t n) {
+        state = state * 1664525u + 1013904223u;
+        return (state >> 8) % n;
+    };
+    auto randomIndex = [&] { return next(2) ? -1 : (int32_t)next(100); };  // absent half the time
+    auto randomCorner = [&] { return MeshData::Corner{(int32_t)next(100), randomIndex(), randomIndex()}; };
+    for (int step = 0; step < 400; ++step) {
+        const uint32_t op = next(20);
+        if (op < 12 || model.empty()) {
+            const MeshData::Corner c = op % 3 == 0 ? MeshData::Corner{(int32_t)next(100), -1, -1} : randomCorner();
+            corners.push_back(c);
+            model.push_back(c);
+        } else if (op < 16) {
+            const size_t i = next((uint32_t)model.size());
+            const MeshData::Corner c = randomCorner();
+            corners.set(i, c);
+            model[i] = c;
+        } else if (op < 18) {
+            corners.pop_back();
+            model.pop_back();
+        } else if (op == 18) {
+            corners.dropNormals();
+            for (MeshData::Corner& c : model) c.normal = -1;
+        } else {
+            corners.dropUvs();
+            for (MeshData::Corner& c : model) c.uv = -1;
+        }
+        expectSame(step);
+    }
+    corners.assign(5, {3, -1, 4});
+    model.assign(5, {3, -1, 4});
+    expectSame(-1);
+    corners = {{1, 2, -1}, {0, -1, -1}};
+    model = {{1, 2, -1}, {0, -1, -1}};
+    expectSame(-2);
+    corners.clear();
+    EXPECT_TRUE(corners.empty());
 }
 
 TEST(ObjReader, ForwardReferencesAreAllowed) {
@@ -260,14 +324,14 @@ TEST(ObjMeshContract, NamesTheFirstViolation) {
     EXPECT_EQ(objMeshContractViolation(good), "");
 
     MeshData m = good;
-    m.corners[1].position = 3;
+    m.corners.set(1, {3, -1, -1});
     EXPECT_EQ(objMeshContractViolation(m), "corner 1: vertex index 3 is out of range (the mesh has 3)");
     m = good;
-    m.corners[2].position = -1;
+    m.corners.set(2, {-1, -1, -1});
     EXPECT_EQ(objMeshContractViolation(m), "corner 2: vertex index -1 is out of range (the mesh has 3)");
     m = good;
     m.normals = {Vec3(0, 0, 1)};
-    m.corners[0].normal = 0;  // a normal on one corner, the mesh flagged as without
+    m.corners.set(0, {0, 0, -1});  // a normal on one corner, the mesh flagged as without
     EXPECT_EQ(objMeshContractViolation(m),
               "corner 0: normal index 0 given, but the mesh is flagged as without normals");
     m.hasNormals = true;  // flagged, but corners 1 and 2 have none
@@ -275,7 +339,7 @@ TEST(ObjMeshContract, NamesTheFirstViolation) {
     m = good;
     m.hasUvs = true;
     m.uvs = {0, 0};
-    for (auto& c : m.corners) c.uv = 1;
+    for (size_t i = 0; i < m.corners.size(); ++i) m.corners.set(i, {m.corners.position(i), -1, 1});
     EXPECT_EQ(objMeshContractViolation(m), "corner 0: texture coordinate index 1 is out of range (the mesh has 1)");
     m = good;
     m.positions[1].y = std::numeric_limits<float>::infinity();
