@@ -23,7 +23,7 @@ struct AccumPixel {
     // of the image's error, into NaN or Inf for good (the bounds of docs/LIMITS.md keep valid scenes clear of it).
     TRAZO_HD void add(Vec3 sample, bool secondHalf, float weight) {
         for (int c = 0; c < 3; ++c)
-            if (!(fabsf(sample[c]) <= 3.40282347e38f)) sample[c] = 0.0f;
+            if (!isFinite(sample[c])) sample[c] = 0.0f;
         const double w = weight;
         for (int c = 0; c < 3; ++c) sum[c] += w * sample[c];
         count += w;

@@ -82,13 +82,14 @@ TRAZO_HD Vec3 min(Vec3 a, Vec3 b) { return {fminf(a.x, b.x), fminf(a.y, b.y), fm
 TRAZO_HD Vec3 max(Vec3 a, Vec3 b) { return {fmaxf(a.x, b.x), fmaxf(a.y, b.y), fmaxf(a.z, b.z)}; }
 TRAZO_HD float maxComponent(Vec3 a) { return maxOf(a.x, maxOf(a.y, a.z)); }
 TRAZO_HD bool isBlack(Vec3 a) { return a.x == 0.0f && a.y == 0.0f && a.z == 0.0f; }
-TRAZO_HD bool isFinite(Vec3 a) {
+TRAZO_HD bool isFinite(float a) {
 #if defined(__CUDA_ARCH__)
-    return isfinite(a.x) && isfinite(a.y) && isfinite(a.z);
+    return isfinite(a);
 #else
-    return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+    return std::isfinite(a);
 #endif
 }
+TRAZO_HD bool isFinite(Vec3 a) { return isFinite(a.x) && isFinite(a.y) && isFinite(a.z); }
 TRAZO_HD Vec3 lerp(Vec3 a, Vec3 b, float t) { return a * (1.0f - t) + b * t; }
 
 // Any unit vector orthogonal to n (n must be unit length); Duff et al. 2017, branch-free and stable.

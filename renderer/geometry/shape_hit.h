@@ -12,8 +12,9 @@ namespace trazo {
 struct ShapeHit {
     float t;
     Vec3 normal;
-    uint32_t triangle;  // meshes only: the triangle hit (index into SceneView::triangles) and its
-    float b1, b2;       // barycentrics; analytic shapes leave these unset
+    uint32_t triangle;  // meshes: the triangle hit (index into SceneView::triangles); boxes: the face,
+                        // 2·axis + 1 for the + face; CSG solids: the leaf (node within the object)
+    float b1, b2;       // meshes only: the triangle's barycentrics
 };
 
 }  // namespace trazo

@@ -21,6 +21,9 @@ struct SurfaceHit {
     float b1, b2;
 };
 
+// The object kind's own view of an object's hit (what objectSurface and objectHitPoint take).
+TRAZO_HD ShapeHit shapeHitOf(const SurfaceHit& hit) { return ShapeHit{hit.t, hit.normal, hit.triangle, hit.b1, hit.b2}; }
+
 // A ray and its intersectScene answer (found: whether there is one), for code that traced the ray already: the
 // CPU's tile loop traces a block of camera rays together, indirect light a shading point's directions
 // (nearest_packet.h's tracePacket).

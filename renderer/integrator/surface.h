@@ -14,18 +14,18 @@ namespace trazo {
 // wantUv: the material has textures (materialHasTextures); without, the uv and tangent frame (an atan2 and an
 // acos on a sphere) are skipped: applyTextures would not read them.
 TRAZO_HD SurfacePoint surfaceAt(const SceneView& scene, const ObjectRef& o, const SurfaceHit& hit, Vec3 p, bool wantUv) {
-    const ShapeHit shapeHit{hit.t, hit.normal, hit.triangle, hit.b1, hit.b2};
+    const ShapeHit shapeHit = shapeHitOf(hit);
     return visitObject(scene, o, [&](const auto& shape) { return objectSurface(scene, shape, shapeHit, p, wantUv); });
 }
 
 // Where an object's hit along `ray` is, with its error bound: the object kind's own computation from its surface
 // (objectHitPoint), so secondary rays leave by an offset that scales with the hit, not with the ray's origin.
 // hit.normal becomes the normal at that point (HitPoint), for everything shaded there. On the device the kinds'
-// objectHitPoint are called (TRAZO_HD_CALL), all but the box's: inlined, they held the indirect-light kernels'
-// registers across every hit (kernel_budget, scripts/kernel_resources.sh); on the host all are inlined, as this
-// is (called out of line by GCC's choice, they cost scene 6 a quarter of its time).
+// objectHitPoint are called (TRAZO_HD_DEVICE_CALL), all but the box's: inlined, they held the indirect-light
+// kernels' registers across every hit (kernel_budget, scripts/kernel_resources.sh). On the host they and this are
+// always inlined: called out of line by GCC's choice, they cost scene 6 a quarter of its time.
 TRAZO_HD_HOT HitPoint hitPointOn(const SceneView& scene, const ObjectRef& o, const Ray& ray, SurfaceHit& hit) {
-    const ShapeHit shapeHit{hit.t, hit.normal, hit.triangle, hit.b1, hit.b2};
+    const ShapeHit shapeHit = shapeHitOf(hit);
     const HitPoint at =
         visitObject(scene, o, [&](const auto& shape) { return objectHitPoint(scene, shape, ray, shapeHit); });
     hit.normal = at.normal;

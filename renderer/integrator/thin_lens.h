@@ -37,13 +37,14 @@ TRAZO_HD Ray thinLensRay(const CameraFrame& c, float x, float y, float aperture,
                          float lensY) {
     const Ray pinhole = generateCameraRay(c, x, y);
     if (aperture == 0.0f) return pinhole;
-    const Vec3 toFocus = pinhole.direction * (focalDistance / dot(pinhole.direction, c.forward));
+    const float forward = dot(pinhole.direction, c.forward);
+    const Vec3 toFocus = pinhole.direction * (focalDistance / forward);
     const Vec3 toLens = (c.right * lensX + c.up * lensY) * aperture;
     const Vec3 direction = toFocus - toLens;
     // A focal distance beyond about 1e19 squares out of float: the same direction from both divided by it.
-    if (!(dot(direction, direction) < INFINITY))
-        return Ray{c.origin + toLens, normalize(pinhole.direction * (1.0f / dot(pinhole.direction, c.forward)) -
-                                                toLens * (1.0f / focalDistance))};
+    if (!isFinite(dot(direction, direction)))
+        return Ray{c.origin + toLens,
+                   normalize(pinhole.direction * (1.0f / forward) - toLens * (1.0f / focalDistance))};
     return Ray{c.origin + toLens, normalize(direction)};
 }
 

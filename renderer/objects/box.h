@@ -27,7 +27,7 @@ struct BoxShape {
 // down first (only then, so every other box's normals keep their bits).
 TRAZO_HD Vec3 boxFaceNormal(const BoxShape& box, int axis, float sign) {
     const Vec3 row = box.objectFromWorld.row[axis] * sign;
-    if (dot(row, row) <= 3.40282347e38f) return normalize(row);
+    if (isFinite(dot(row, row))) return normalize(row);
     return normalize(row * (1.0f / maxComponent(abs(row))));
 }
 
