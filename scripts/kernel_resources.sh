@@ -59,7 +59,10 @@ cat "$work"/*.log | awk '
 [[ -s $work/kernels.txt ]] || { echo "kernel_resources: ptxas reported no kernels" >&2; exit 1; }
 
 table=$(while read -r mangled regs stack stores loads; do
-  kernel=$(echo "$mangled" | c++filt | sed -E 's/^void //; s/^trazo::(\(anonymous namespace\)::)?//; s/\(.*//')
+  # renderPassKernel<(trazo::IntegratorKind)0, 66u>(…) reads renderPassKernel<thesis, 66u> (integrator 0 of
+  # core/integrator_kinds.h, feature bits 66).
+  kernel=$(echo "$mangled" | c++filt | sed -E 's/^void //; s/^trazo::(\(anonymous namespace\)::)?//;
+    s/\(trazo::IntegratorKind\)0/thesis/; s/>\(.*/>/; s/^([A-Za-z]+)\(.*/\1/')
   block=256; [[ $kernel == rayQueryKernel* ]] && block=128
   perWarp=$(( (regs * 32 + 255) / 256 * 256 ))
   warps=$(( 65536 / perWarp )); (( warps > 64 )) && warps=64
@@ -67,7 +70,7 @@ table=$(while read -r mangled regs stack stores loads; do
   # Feature bits (core/feature_mask.h): 2 area lights, 4 reflection, 16 refraction, 64 indirect, 1024
   # dispersion, 2048 subsurface.
   features=0
-  [[ $kernel =~ \<([0-9]+)u?\> ]] && features=${BASH_REMATCH[1]}
+  [[ $kernel =~ [\<\ ]([0-9]+)u?\> ]] && features=${BASH_REMATCH[1]}
   spillBudget=256; (( features & 64 )) && spillBudget=656
   (( (features & 64) && (features & 2) && (features & (4 | 16)) )) && spillBudget=752
   (( features & (1024 | 2048) )) && spillBudget=704

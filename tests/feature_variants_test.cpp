@@ -44,12 +44,13 @@ TEST(FeatureVariants, SceneFeaturesPickTheMatchingInstance) {
     auto variantOf = [](const char* name) {
         Diagnostics diags;
         const Scene scene = readSceneFile(sourcePath(std::string("scenes/") + name), diags);
-        return sampleVariantFor(flatten(scene).arrays.features);
+        const FlattenResult flat = flatten(scene);
+        return sampleVariantFor(flat.arrays.settings.integrator, flat.arrays.features);
     };
-    EXPECT_EQ(variantFeatures(variantOf("scene1_point.scene")), 0u);
-    EXPECT_EQ(variantFeatures(variantOf("scene1_area.scene")), kFeatureAreaLights);
-    EXPECT_EQ(variantFeatures(variantOf("scene4_reflect.scene")), kFeatureAreaLights | kFeatureReflection);
-    EXPECT_EQ(variantFeatures(variantOf("scene7_refract.scene")), kFeatureAreaLights | kFeatureRefraction);
+    EXPECT_EQ(sampleVariant(variantOf("scene1_point.scene")).features, 0u);
+    EXPECT_EQ(sampleVariant(variantOf("scene1_area.scene")).features, kFeatureAreaLights);
+    EXPECT_EQ(sampleVariant(variantOf("scene4_reflect.scene")).features, kFeatureAreaLights | kFeatureReflection);
+    EXPECT_EQ(sampleVariant(variantOf("scene7_refract.scene")).features, kFeatureAreaLights | kFeatureRefraction);
     // SPEC §6's dispersion and subsurface scattering share the one instance with every feature on.
     EXPECT_EQ(variantOf("effect_dispersion.scene"), kAllFeaturesVariant);
     EXPECT_EQ(variantOf("effect_subsurface.scene"), kAllFeaturesVariant);

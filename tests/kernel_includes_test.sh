@@ -8,7 +8,7 @@ set -euo pipefail
 cxx=$1
 cd "$(dirname "$0")/../renderer"
 bad=0
-for entry in integrator/sample_variants.h integrator/camera_packet.h; do
+for entry in integrator/sample_variants.h integrator/packets/camera_packet.h; do
     deps=$("$cxx" -std=c++17 -M -I. -x c++ "$entry" | tr ' \\' '\n\n' | grep -v '^$' | tail -n +2)
     while IFS= read -r dep; do
         case $dep in

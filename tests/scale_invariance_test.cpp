@@ -13,7 +13,7 @@
 #include "render/frame_setup.h"
 #include "render_harness.h"
 #include "integrator/camera_frame.h"
-#include "integrator/render_sample.h"
+#include "integrator/thesis/thesis_integrator.h"
 #include "objects/box.h"
 #include "scene/scene.h"
 #include "scene/scene_reader.h"

@@ -11,6 +11,14 @@
 #define TRAZO_HOST_SSE 0
 #endif
 
+// TRAZO_HOST_PACKETS: host code that g++ compiles for x86-64 (not the device, nor nvcc's host pass, which renders
+// nothing): the CPU's packet engine (integrator/packets/) and the thesis's shading of packets' hits.
+#if TRAZO_HOST_SSE && !defined(__CUDACC__)
+#define TRAZO_HOST_PACKETS 1
+#else
+#define TRAZO_HOST_PACKETS 0
+#endif
+
 // TRAZO_HOST_AVX: host code compiled for AVX2 (the CPU backend's AVX2 and AVX-512 kernels): meshes are then
 // traversed over eight-wide nodes (accel/wide8_traverse.h).
 #if TRAZO_HOST_SSE && defined(__AVX2__)

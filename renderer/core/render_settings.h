@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "core/integrator_kinds.h"
 #include "core/vec3.h"
 
 namespace trazo {
@@ -21,6 +22,7 @@ struct RenderSettings {
     float aperture;
     float focalDistance;
     uint32_t lensQuality;
+    IntegratorKind integrator = IntegratorKind::Thesis;
 };
 
 }  // namespace trazo

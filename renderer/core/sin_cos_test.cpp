@@ -6,7 +6,7 @@
 
 #include "core/rng.h"
 #include "core/sin_cos.h"
-#include "integrator/packet_lanes.h"
+#include "integrator/packets/packet_lanes.h"
 
 namespace trazo {
 namespace {

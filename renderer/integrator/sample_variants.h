@@ -1,53 +1,91 @@
-// The specialised instances of renderSample<F>: one per combination of the coarse feature bits below,
-// chosen at upload from the scene's FeatureMask, through the same table on both backends.
+// The kernel instances of every integrator (core/integrator_kinds.h) in one table, keyed by (integrator,
+// features): each integrator names its own instances, and the table lays them end to end, so both backends
+// dispatch identically and a new integrator adds its instances without multiplying the others'.
 #pragma once
 
 #include <array>
 #include <utility>
 
-#include "integrator/render_sample.h"
+#include "core/integrator_kinds.h"
+#include "integrator/thesis/thesis_integrator.h"
 
 namespace trazo {
 
-// Bits worth a separate instance (each guards a loop or a branch with ray work behind it): 16 instances.
-constexpr FeatureMask kSpecialisedFeatures =
-    kFeatureAreaLights | kFeatureReflection | kFeatureRefraction | kFeatureIndirect;
-// SPEC §6's dispersion and subsurface scattering: a scene that uses either takes one more instance, with every
-// feature on. The 16 instances of the other features compile exactly as without them (the same code,
-// registers and spills), and a bit each would have doubled the instances, and the CUDA build, twice over.
-constexpr FeatureMask kRareFeatures = kFeatureDispersion | kFeatureSubsurface;
-constexpr uint32_t kSampleVariantCount = 17;
-// The index of the instance with every feature on: the oracle.
-constexpr uint32_t kAllFeaturesVariant = kSampleVariantCount - 1;
-constexpr FeatureMask kAllSampleFeatures = kSpecialisedFeatures | kRareFeatures;
+template <IntegratorKind K>
+struct IntegratorOf;
+#define TRAZO_X(kind, type, keyword)                \
+    template <>                                     \
+    struct IntegratorOf<IntegratorKind::kind> {     \
+        using Type = type;                          \
+    };
+TRAZO_INTEGRATORS(TRAZO_X)
+#undef TRAZO_X
 
-constexpr FeatureMask variantFeatures(uint32_t variant) {
-    if (variant == kAllFeaturesVariant) return kAllSampleFeatures;
-    return ((variant & 1u) ? kFeatureAreaLights : 0u) | ((variant & 2u) ? kFeatureReflection : 0u) |
-           ((variant & 4u) ? kFeatureRefraction : 0u) | ((variant & 8u) ? kFeatureIndirect : 0u);
+// How many instances each integrator has, in list order.
+constexpr uint32_t kIntegratorInstances[] = {
+#define TRAZO_X(kind, type, keyword) type::kInstances,
+    TRAZO_INTEGRATORS(TRAZO_X)
+#undef TRAZO_X
+};
+
+constexpr uint32_t firstVariantOf(IntegratorKind kind) {
+    uint32_t first = 0;
+    for (uint32_t k = 0; k < (uint32_t)kind; ++k) first += kIntegratorInstances[k];
+    return first;
+}
+constexpr uint32_t kSampleVariantCount = firstVariantOf(IntegratorKind(kIntegratorCount));
+
+struct SampleVariant {
+    IntegratorKind integrator;
+    FeatureMask features;
+};
+
+// Entry v of the table: which integrator, specialised for which feature bits.
+constexpr SampleVariant sampleVariant(uint32_t v) {
+    uint32_t k = 0;
+    while (v >= kIntegratorInstances[k]) v -= kIntegratorInstances[k++];
+    const IntegratorKind kind = IntegratorKind(k);
+#define TRAZO_X(kind_, type, keyword) \
+    if (kind == IntegratorKind::kind_) return SampleVariant{kind, type::instanceFeatures(v)};
+    TRAZO_INTEGRATORS(TRAZO_X)
+#undef TRAZO_X
+    return SampleVariant{kind, 0u};
 }
 
-constexpr uint32_t sampleVariantFor(FeatureMask mask) {
-    if (mask & kRareFeatures) return kAllFeaturesVariant;
-    return ((mask & kFeatureAreaLights) ? 1u : 0u) | ((mask & kFeatureReflection) ? 2u : 0u) |
-           ((mask & kFeatureRefraction) ? 4u : 0u) | ((mask & kFeatureIndirect) ? 8u : 0u);
+// The entry that renders a scene with this integrator and these features.
+constexpr uint32_t sampleVariantFor(IntegratorKind kind, FeatureMask mask) {
+#define TRAZO_X(kind_, type, keyword) \
+    if (kind == IntegratorKind::kind_) return firstVariantOf(kind) + type::instanceFor(mask);
+    TRAZO_INTEGRATORS(TRAZO_X)
+#undef TRAZO_X
+    return 0;
 }
 
-static_assert(variantFeatures(kAllFeaturesVariant) == kAllSampleFeatures);
-static_assert(sampleVariantFor(kAllSampleFeatures) == kAllFeaturesVariant);
-static_assert(variantFeatures(kAllFeaturesVariant - 1) == kSpecialisedFeatures);
+// The thesis's oracle, every feature on, in the table.
+constexpr uint32_t kAllFeaturesVariant =
+    firstVariantOf(IntegratorKind::Thesis) + ThesisIntegrator::kAllFeaturesInstance;
 
-// A table with Entry<variantFeatures(i)>::value at index i, e.g. the CPU's sample functions or the CUDA
-// kernels, so both backends dispatch identically.
-template <template <FeatureMask> class Entry, uint32_t... I>
-constexpr auto makeVariantTable(std::integer_sequence<uint32_t, I...>) {
-    using Value = decltype(Entry<0>::value);
-    return std::array<Value, sizeof...(I)>{Entry<variantFeatures(I)>::value...};
+// One sample of pixel (px, py) in this pass by integrator K specialised for F. `given` (host x86 only, else
+// null): the scene's antialiasing side is 1, and this is the camera ray of the pixel's one position, traced.
+template <IntegratorKind K, FeatureMask F>
+TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
+                           uint32_t pass, uint32_t& rays, const TracedRay* given = nullptr) {
+    return IntegratorOf<K>::Type::template sample<F>(scene, frame, px, py, pass, rays, given);
 }
 
-template <template <FeatureMask> class Entry>
+// A table with Entry<integrator, features>::value of entry v at index v, e.g. the CPU's tile renderers or the
+// CUDA kernels' launchers.
+template <template <IntegratorKind, FeatureMask> class Entry, uint32_t... V>
+constexpr auto makeVariantTable(std::integer_sequence<uint32_t, V...>) {
+    using Value = decltype(Entry<IntegratorKind::Thesis, 0>::value);
+    return std::array<Value, sizeof...(V)>{Entry<sampleVariant(V).integrator, sampleVariant(V).features>::value...};
+}
+
+template <template <IntegratorKind, FeatureMask> class Entry>
 constexpr auto makeVariantTable() {
     return makeVariantTable<Entry>(std::make_integer_sequence<uint32_t, kSampleVariantCount>{});
 }
+
+static_assert(sampleVariant(kAllFeaturesVariant).features == kAllSampleFeatures);
 
 }  // namespace trazo

@@ -5,7 +5,7 @@
 #include "core/rng.h"
 #include "integrator/random_walk.h"
 #include "integrator/scene_intersect.h"
-#include "integrator/shading_point.h"
+#include "shading/shading_point.h"
 #include "shading/material.h"
 
 namespace trazo {

@@ -5,7 +5,7 @@
 
 #include "geometry/surface_frame.h"
 #include "integrator/scene_intersect.h"
-#include "integrator/shading_point.h"
+#include "shading/shading_point.h"
 #include "shading/material.h"
 #include "shading/texture.h"
 
@@ -59,6 +59,29 @@ TRAZO_HD_HOT ShadingPoint facingShadingPoint(Vec3 p, float offset, Vec3 d, const
 }
 TRAZO_HD ShadingPoint facingShadingPoint(Vec3 p, Vec3 pError, Vec3 d, const SurfacePoint& s) {
     return facingShadingPoint(p, offsetDistance(pError, s.ng), d, s);
+}
+
+// The shading point at Q, an object's `hit` along `ray`, and in mq its material with textures applied: Q where the
+// object kind puts it (hitPointOn), for a ray from anywhere (the camera's).
+TRAZO_HD ShadingPoint shadingPointAt(const SceneView& scene, const Ray& ray, SurfaceHit hit, MaterialData& mq) {
+    const ObjectRef& o = scene.objects[hit.object];
+    mq = scene.materials[o.material];
+    const HitPoint q = hitPointOn(scene, o, ray, hit);
+    SurfacePoint sq = surfaceAt(scene, o, hit, q.p, materialHasTextures(mq));
+    applyTextures(scene, mq, sq);
+    return facingShadingPoint(q.p, q.offset, ray.direction, sq);
+}
+
+// shadingPointAt for a ray that left a point of the scene (an indirect direction): Q = o + t·d, whose bound is then
+// already at the scene's own scale, as the kind's would be. Cheaper on the device, where the kind's computation
+// at every indirect hit put the indirect-light kernels over their spill budget (kernel_budget).
+TRAZO_HD ShadingPoint shadingPointAlong(const SceneView& scene, const Ray& ray, const SurfaceHit& hit,
+                                        MaterialData& mq) {
+    const ObjectRef& o = scene.objects[hit.object];
+    mq = scene.materials[o.material];
+    SurfacePoint sq = surfaceAt(scene, o, hit, pointAt(ray, hit.t), materialHasTextures(mq));
+    applyTextures(scene, mq, sq);
+    return facingShadingPoint(pointAt(ray, hit.t), hitPointError(ray, hit.t), ray.direction, sq);
 }
 
 }  // namespace trazo

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/feature_mask.h"
-#include "integrator/render_sample.h"
+#include "integrator/sample_variants.h"
 #include "integrator/sample_variants.h"
 
 namespace trazo {
@@ -57,7 +57,7 @@ uint32_t fullCyclePasses(const SceneArrays& a, const StrataBlocks& blocks) { ret
 uint32_t cameraPathPasses(const SceneArrays& a, const StrataBlocks& blocks) { return cyclePasses(a, blocks, false); }
 
 bool noSamplingNoise(const SceneArrays& a) {
-    return sampleVariantFor(a.features) == 0 && antialiasingSide(a.settings.antialiasing) == 1 &&
+    return sampleVariantFor(a.settings.integrator, a.features) == 0 && antialiasingSide(a.settings.antialiasing) == 1 &&
            a.settings.aperture == 0.0f;
 }
 

@@ -9,15 +9,15 @@
 
 #include "backends/cpu/cpu_kernels.h"
 #include "integrator/sample_variants.h"
-#if TRAZO_SHADOW_PACKETS
-#include "integrator/camera_block.h"
-#include "integrator/camera_packet.h"
+#if TRAZO_HOST_PACKETS
+#include "integrator/thesis/camera_block.h"
+#include "integrator/packets/camera_packet.h"
 #endif
 
 namespace trazo {
 namespace {
 
-#if TRAZO_SHADOW_PACKETS
+#if TRAZO_HOST_PACKETS
 #if !defined(TRAZO_FLATTEN_PACKET_KERNELS) || TRAZO_FLATTEN_PACKET_KERNELS
 #define TRAZO_PACKET_KERNEL_FLATTEN __attribute__((flatten))
 #else
@@ -33,7 +33,7 @@ static_assert(kPacketSide * kPacketSide <= (uint32_t)kPacketRays, "a block's ray
 // everything the block loop calls is inlined into it (GCC's own choice left the shading and shadow rays out of
 // line here: 5% more instructions on scene1_point). The sanitizer build turns it off (TRAZO_FLATTEN_PACKET_KERNELS,
 // renderer/CMakeLists.txt): instrumented, these flattened kernels took most of that build's time.
-template <FeatureMask F>
+template <IntegratorKind K, FeatureMask F>
 TRAZO_PACKET_KERNEL_FLATTEN uint64_t renderTilePassesInPackets(const SceneView& scene, const FrameParams& frame,
                                                                Tile tile, uint32_t firstPass, uint32_t passCount,
                                                                AccumPixel* accum) {
@@ -82,7 +82,7 @@ TRAZO_PACKET_KERNEL_FLATTEN uint64_t renderTilePassesInPackets(const SceneView& 
                 for (uint64_t m = active; m; m &= m - 1) {
                     const int i = __builtin_ctzll(m);
                     uint32_t sampleRays = 0;
-                    const Vec3 c = renderSample<F>(scene, frame, imageX[i], imageY[i], pass, sampleRays, &hits[i]);
+                    const Vec3 c = renderSample<K, F>(scene, frame, imageX[i], imageY[i], pass, sampleRays, &hits[i]);
                     accum[accumIndex[i]].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
                     rays += sampleRays;
                 }
@@ -95,10 +95,18 @@ TRAZO_PACKET_KERNEL_FLATTEN uint64_t renderTilePassesInPackets(const SceneView& 
 // With indirect light only where the block is shaded together: elsewhere its camera rays are a small share of the
 // rays, and packets there cost more than they saved (scene9_indirect_point: this translation unit's code for them
 // inlined less of the indirect rays' work).
-template <FeatureMask F>
+// The thesis's instances only: the block shading is its shading.
+template <IntegratorKind K, FeatureMask F>
+constexpr TileRenderFn packetTileRenderer() {
+    if constexpr (K == IntegratorKind::Thesis && !((F & kFeatureIndirect) && !blockShadingServes<F>()))
+        return &renderTilePassesInPackets<K, F>;
+    else
+        return nullptr;
+}
+
+template <IntegratorKind K, FeatureMask F>
 struct PacketTileVariant {
-    static constexpr TileRenderFn value =
-        (F & kFeatureIndirect) && !blockShadingServes<F>() ? nullptr : &renderTilePassesInPackets<F>;
+    static constexpr TileRenderFn value = packetTileRenderer<K, F>();
 };
 
 void tracePacketEntry(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, TracedRay* out) {

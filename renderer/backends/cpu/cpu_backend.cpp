@@ -80,7 +80,7 @@ public:
         const uint32_t tilesY = (height + kTileSize - 1) / kTileSize;
         const uint32_t tileCount = tilesX * tilesY;
         std::atomic<uint64_t> rays{0};
-        const uint32_t variant = sampleVariantFor(view_.features);
+        const uint32_t variant = sampleVariantFor(view_.settings.integrator, view_.features);
         const CameraPacketKernels& packets = kernels_.cameraPackets();
         const bool inPackets = packets.available && packets.renderTile[variant] && cameraPacketsApply(view_);
         const TileRenderFn renderTile = inPackets ? packets.renderTile[variant] : kernels_.renderTile[variant];

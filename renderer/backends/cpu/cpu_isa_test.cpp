@@ -15,7 +15,7 @@
 #include "backends/cpu/cpu_kernels.h"
 #include "fetched_assets.h"
 #include "flatten/flatten_mesh.h"
-#include "integrator/packet_lanes.h"
+#include "integrator/packets/packet_lanes.h"
 #include "integrator/scene_intersect.h"
 #include "render_harness.h"
 #include "support/counter_uniform.h"

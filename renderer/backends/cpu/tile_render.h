@@ -8,13 +8,16 @@
 #include "backends/cpu/cpu_kernels.h"
 #include "integrator/ray_query.h"
 #include "integrator/sample_variants.h"
+#if TRAZO_HOST_PACKETS
+#include "integrator/packets/occluded_packet.h"
+#endif
 
 namespace trazo {
 namespace {
 
 // Passes inside the tile keep its data in cache; per pixel they still add in pass order. The tile is in the
 // accumulation's pixels (frame.target). Returns rays.
-template <FeatureMask F>
+template <IntegratorKind K, FeatureMask F>
 uint64_t renderTilePasses(const SceneView& scene, const FrameParams& frame, Tile tile, uint32_t firstPass,
                           uint32_t passCount, AccumPixel* accum) {
     uint64_t rays = 0;
@@ -24,7 +27,7 @@ uint64_t renderTilePasses(const SceneView& scene, const FrameParams& frame, Tile
                 uint32_t sampleRays = 0;
                 uint32_t px, py;  // the accumulation's pixel (x, y) is image pixel (px, py): frame.target
                 if (!frame.imagePixel(x, y, px, py)) continue;
-                const Vec3 c = renderSample<F>(scene, frame, px, py, pass, sampleRays);
+                const Vec3 c = renderSample<K, F>(scene, frame, px, py, pass, sampleRays);
                 accum[(size_t)y * frame.accumWidth() + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
                 rays += sampleRays;
             }
@@ -33,16 +36,16 @@ uint64_t renderTilePasses(const SceneView& scene, const FrameParams& frame, Tile
     return rays;
 }
 
-template <FeatureMask F>
+template <IntegratorKind K, FeatureMask F>
 struct TileVariant {
-    static constexpr TileRenderFn value = &renderTilePasses<F>;
+    static constexpr TileRenderFn value = &renderTilePasses<K, F>;
 };
 
 void answerRayQueries(const SceneView& scene, const RayQuery* queries, size_t count, RayQueryKind kind, RayAnswer* out) {
     for (size_t i = 0; i < count; ++i) out[i] = answerRayQuery(scene, queries[i], kind);
 }
 
-#if TRAZO_SHADOW_PACKETS
+#if TRAZO_HOST_PACKETS
 uint64_t occludedPacketEntry(const SceneView& scene, Vec3 origin, const RayPacket& rays, uint64_t active) {
     return occludedPacket(scene, origin, rays, active);
 }
@@ -53,7 +56,7 @@ constexpr CpuKernels makeCpuKernels(CpuIsa isa, const CameraPacketKernels& (*cam
     constexpr auto tiles = makeVariantTable<TileVariant>();
     CpuKernels k{isa, {}, &answerRayQueries, nullptr, cameraPackets};
     for (uint32_t i = 0; i < kSampleVariantCount; ++i) k.renderTile[i] = tiles[i];
-#if TRAZO_SHADOW_PACKETS
+#if TRAZO_HOST_PACKETS
     k.occludedPacket = &occludedPacketEntry;
 #endif
     return k;

@@ -37,9 +37,9 @@ __global__ void rayQueryKernel(SceneView scene, const RayQuery* queries, uint32_
     if (i < count) out[i] = answerRayQuery(scene, queries[i], kind);
 }
 
-template <FeatureMask F>
+template <IntegratorKind K, FeatureMask F>
 struct LaunchVariant {
-    static constexpr auto value = &launchRenderPass<F>;
+    static constexpr auto value = &launchRenderPass<K, F>;
 };
 const auto kLaunchVariants = makeVariantTable<LaunchVariant>();
 
@@ -224,7 +224,7 @@ public:
         AccumPixel* const accum = frame.target.probe ? probe_ : accum_;
         const dim3 block(kPassBlockX, kPassBlockY);
         const dim3 grid((frame.accumWidth() + block.x - 1) / block.x, (frame.accumHeight() + block.y - 1) / block.y);
-        const auto launch = kLaunchVariants[sampleVariantFor(view_.features)];
+        const auto launch = kLaunchVariants[sampleVariantFor(view_.settings.integrator, view_.features)];
         for (uint32_t pass = firstPass; pass < firstPass + passCount; ++pass) {
             launch(grid, block, view_, frame, pass, accum, rayCounter_);
             checkPasses(cudaGetLastError(), pass, pass + 1);

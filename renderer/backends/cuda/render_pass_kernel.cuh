@@ -13,7 +13,7 @@ namespace trazo {
 #define TRAZO_CUDA_PASS_MIN_BLOCKS 2
 #endif
 
-template <FeatureMask F>
+template <IntegratorKind K, FeatureMask F>
 __global__ void __launch_bounds__(kPassBlockX* kPassBlockY, TRAZO_CUDA_PASS_MIN_BLOCKS) renderPassKernel(SceneView scene, FrameParams frame, uint32_t pass, AccumPixel* accum,
                                  unsigned long long* rayCounter) {
     const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x;
@@ -21,7 +21,7 @@ __global__ void __launch_bounds__(kPassBlockX* kPassBlockY, TRAZO_CUDA_PASS_MIN_
     uint32_t rays = 0;
     uint32_t px, py;  // accumulation pixel (x, y) is image pixel (px, py): the image's own, or the probe's list
     if (x < frame.accumWidth() && y < frame.accumHeight() && frame.imagePixel(x, y, px, py)) {
-        const Vec3 c = renderSample<F>(scene, frame, px, py, pass, rays);
+        const Vec3 c = renderSample<K, F>(scene, frame, px, py, pass, rays);
         accum[(size_t)y * frame.accumWidth() + x].add(c, frame.inSecondHalf(pass), frame.sampleWeight);
     }
     // One atomic per warp for the ray count.
@@ -30,15 +30,15 @@ __global__ void __launch_bounds__(kPassBlockX* kPassBlockY, TRAZO_CUDA_PASS_MIN_
 }
 
 // The launchers render_pass_launch.h declares.
-template <FeatureMask F>
+template <IntegratorKind K, FeatureMask F>
 void launchRenderPass(dim3 grid, dim3 block, const SceneView& scene, const FrameParams& frame, uint32_t pass,
                       AccumPixel* accum, unsigned long long* rayCounter) {
-    renderPassKernel<F><<<grid, block>>>(scene, frame, pass, accum, rayCounter);
+    renderPassKernel<K, F><<<grid, block>>>(scene, frame, pass, accum, rayCounter);
 }
 
 // Compiles variant I of the shared table (sample_variants.h) in the translation unit that says it.
 #define TRAZO_RENDER_PASS_VARIANT(I)                                                                      \
-    template void launchRenderPass<variantFeatures(I)>(dim3, dim3, const SceneView&, const FrameParams&, \
-                                                       uint32_t, AccumPixel*, unsigned long long*)
+    template void launchRenderPass<sampleVariant(I).integrator, sampleVariant(I).features>(              \
+        dim3, dim3, const SceneView&, const FrameParams&, uint32_t, AccumPixel*, unsigned long long*)
 
 }  // namespace trazo

@@ -14,7 +14,7 @@ namespace trazo {
 constexpr unsigned kPassBlockX = 16, kPassBlockY = 16;
 static_assert((kPassBlockX * kPassBlockY) % 32 == 0, "renderPassKernel's ray count shuffles over full warps");
 
-template <FeatureMask F>
+template <IntegratorKind K, FeatureMask F>
 void launchRenderPass(dim3 grid, dim3 block, const SceneView& scene, const FrameParams& frame, uint32_t pass,
                       AccumPixel* accum, unsigned long long* rayCounter);
 

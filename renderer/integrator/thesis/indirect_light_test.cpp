@@ -8,12 +8,12 @@
 #include <cstring>
 #include <string>
 
-#include "integrator/indirect_light.h"
-#include "integrator/packet_test_scenes.h"
-#include "integrator/render_sample.h"
+#include "integrator/thesis/indirect_light.h"
+#include "integrator/packets/packet_test_scenes.h"
+#include "integrator/thesis/thesis_integrator.h"
 #include "integrator/sample_variants.h"
 
-#if TRAZO_SHADOW_PACKETS
+#if TRAZO_HOST_PACKETS
 
 namespace trazo {
 namespace {
@@ -109,4 +109,4 @@ TEST(IndirectLight, PacketsApplyOnlyWhereTheirAnswerIsTheLoops) {
 
 }  // namespace
 }  // namespace trazo
-#endif  // TRAZO_SHADOW_PACKETS
+#endif  // TRAZO_HOST_PACKETS

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "backends/cpu/cpu_kernels.h"
-#include "integrator/packet_test_scenes.h"
+#include "integrator/packets/packet_test_scenes.h"
 
-#if TRAZO_SHADOW_PACKETS
-#include "integrator/camera_block.h"
-#include "integrator/camera_packet.h"
+#if TRAZO_HOST_PACKETS
+#include "integrator/thesis/camera_block.h"
+#include "integrator/packets/camera_packet.h"
 
 namespace trazo {
 namespace {
@@ -54,7 +54,7 @@ FrameParams frameFor(const CameraFrame& camera, uint32_t seed) {
     return frame;
 }
 
-// shadeBlock<F> of every 8×8 block of a 48×40 image against renderSample<F> given the same hits, in passes `passes`;
+// shadeBlock<F> of every 8×8 block of a 48×40 image against thesisSample<F> given the same hits, in passes `passes`;
 // `withFrame` sets the frame up. Counts the pixels compared and the lit ones.
 template <FeatureMask F, class Setup>
 void expectBlocksAreRenderSample(std::initializer_list<uint32_t> passes, const Setup& withFrame, uint32_t& compared,
@@ -87,7 +87,7 @@ void expectBlocksAreRenderSample(std::initializer_list<uint32_t> passes, const S
                     for (uint64_t m = active; m; m &= m - 1) {
                         const int i = __builtin_ctzll(m);
                         const Vec3 one =
-                            renderSample<F>(scene.view, frame, imageX[i], imageY[i], pass, raysOne, &hits[i]);
+                            thesisSample<F>(scene.view, frame, imageX[i], imageY[i], pass, raysOne, &hits[i]);
                         ASSERT_EQ(std::memcmp(&one, &color[i], sizeof one), 0)
                             << "seed " << seed << " pixel " << imageX[i] << ", " << imageY[i] << " pass " << pass;
                         lit += one.x + one.y + one.z > 0.0f;
@@ -113,8 +113,8 @@ TEST(CameraPacket, DirectOnlyBlocksAreRenderSampleInEveryPass) {
     const FrameParams frame = frameFor(camera, 3);
     for (uint32_t i = 0; i < 64; ++i) {
         uint32_t a = 0, b = 0;
-        const Vec3 first = renderSample<kDirectOnly>(scene.view, frame, i % 8, i / 8, 0, a);
-        const Vec3 later = renderSample<kDirectOnly>(scene.view, frame, i % 8, i / 8, 7, b);
+        const Vec3 first = thesisSample<kDirectOnly>(scene.view, frame, i % 8, i / 8, 0, a);
+        const Vec3 later = thesisSample<kDirectOnly>(scene.view, frame, i % 8, i / 8, 7, b);
         ASSERT_EQ(std::memcmp(&first, &later, sizeof first), 0);
     }
 }
@@ -140,7 +140,8 @@ TEST(CameraPacket, IndirectBlocksAreRenderSample) {
 TEST(CameraPacket, BlockTilesAddWhatThePlainTilesAdd) {
     int paths = 0;
     for (CpuIsa isa : kCpuIsas) {
-        for (const uint32_t variant : {sampleVariantFor(kDirectOnly), sampleVariantFor(kFeatureIndirect)}) {
+        for (const uint32_t variant : {sampleVariantFor(IntegratorKind::Thesis, kDirectOnly),
+                                       sampleVariantFor(IntegratorKind::Thesis, kFeatureIndirect)}) {
             const CpuKernels* kernels = cpuKernelsFor(isa);
             if (!kernels) continue;
             const TileRenderFn inPackets = kernels->cameraPackets().renderTile[variant];
@@ -167,4 +168,4 @@ TEST(CameraPacket, BlockTilesAddWhatThePlainTilesAdd) {
 
 }  // namespace
 }  // namespace trazo
-#endif  // TRAZO_SHADOW_PACKETS
+#endif  // TRAZO_HOST_PACKETS

@@ -1,94 +1,13 @@
-// Direct(P) of SPEC §5: point lights with hard shadows, area lights by a block of jittered cells per pass.
+// Host only: Direct(P) with shadow rays traced in packets: an area light's cells from one point, and the point
+// lights from many points (a block's, or the points indirect directions found), the same sums bit for bit.
 #pragma once
 
-#include "core/rng.h"
+#include "integrator/packets/occluded_packet.h"
 #include "integrator/strata.h"
-#include "integrator/scene_intersect.h"
-#include "integrator/shading_point.h"
-#include "shading/cook_torrance.h"
-#include "shading/material.h"
-#include "shading/oren_nayar.h"
-// Host code that g++ compiles for x86-64 (not the device, nor nvcc's host pass, which renders nothing): an area
-// light's shadow rays traced in packets (occluded_packet.h).
-#if !TRAZO_DEVICE_PATHS && !defined(__CUDACC__) && defined(__SSE2__)
-#define TRAZO_SHADOW_PACKETS 1
-#include "integrator/occluded_packet.h"
-#else
-#define TRAZO_SHADOW_PACKETS 0
-#endif
+#include "integrator/thesis/shade_from_point.h"
 
 namespace trazo {
 
-// The material's Shade of SPEC §5 at one shading point. On the host a black lobe is never evaluated (a matte
-// surface pays no Cook–Torrance; σ = 0 no Oren–Nayar azimuth) and what depends only on the viewer is computed
-// once per point. The device evaluates both lobes per sample without branches: fewer live values, and the
-// registers are what limit a GPU thread (ptxas, sm_90: 12 of the 16 variants at or below 9b68041's count).
-struct PointBrdf {
-    const ShadingPoint& sp;
-    const MaterialData& m;
-    bool hasDiffuse, hasSpecular;
-#if !TRAZO_DEVICE_PATHS
-    OrenNayarView diffuseView;
-#endif
-
-    TRAZO_HD PointBrdf(const ShadingPoint& spIn, const MaterialData& mIn)
-        : sp(spIn), m(mIn), hasDiffuse(!isBlack(mIn.diffuse)), hasSpecular(!isBlack(mIn.specular)) {
-#if !TRAZO_DEVICE_PATHS
-        diffuseView = orenNayarView(sp.n, sp.v, m.roughness);
-#endif
-    }
-
-    TRAZO_HD bool reflects() const { return (hasDiffuse || hasSpecular) && dot(sp.n, sp.v) > 0.0f; }
-    // Kd·ON(N, L, V, σ) + Ks·CT(N, L, V, σ); N·L > 0 and N·V > 0 assumed.
-    TRAZO_HD Vec3 eval(Vec3 l) const {
-        Vec3 f(0.0f);
-#if !TRAZO_DEVICE_PATHS
-        if (hasDiffuse) f = m.diffuse * evalOrenNayar(diffuseView, sp.n, l);
-        if (hasSpecular) f += m.specular * evalCookTorrance(sp.n, l, sp.v, m.roughness);
-#else  // both lobes, branch-free: a black one adds 0
-        f = m.diffuse * evalOrenNayar(sp.n, l, sp.v, m.roughness) +
-            m.specular * evalCookTorrance(sp.n, l, sp.v, m.roughness);
-#endif
-        return f;
-    }
-};
-
-// PointBrdf(sp, m).reflects() of a point with normal n, viewer v and those lobes, without the view it computes.
-TRAZO_HD bool reflectsLight(Vec3 diffuse, Vec3 specular, Vec3 n, Vec3 v) {
-    return (!isBlack(diffuse) || !isBlack(specular)) && dot(n, v) > 0.0f;
-}
-
-// The shadow ray from the shading point towards a light sample X: l the unit vector to X, leaving from origin
-// over (0, |X − origin|); false where Shade is 0 without one (X at the point, or not above its shading normal).
-TRAZO_HD bool aimShadowRay(const ShadingPoint& sp, Vec3 x, Vec3& l, Vec3& origin) {
-    Vec3 toLight = x - sp.p;
-    const float dist = length(toLight);
-    if (!(dist > 0.0f)) return false;
-    l = toLight / dist;
-    if (dot(sp.n, l) <= 0.0f) return false;
-    origin = sp.rayOrigin(l);
-    return true;
-}
-
-// One light sample X seen from the shading point: visible ⇒ Shade(P, L, C) = C ⊙ brdf(L). Counts the
-// shadow ray.
-TRAZO_HD Vec3 shadeFromPoint(const SceneView& scene, const ShadingPoint& sp, const PointBrdf& brdf, Vec3 x,
-                             Vec3 color, uint32_t& rays) {
-    Vec3 l, origin;
-    if (!aimShadowRay(sp, x, l, origin)) return Vec3(0.0f);  // Shade would be 0: no shadow ray
-    ++rays;
-    if (occluded(scene, Ray{origin, l}, length(x - origin))) return Vec3(0.0f);
-    return color * brdf.eval(l);
-}
-
-// The jittered point of cell s of the light's grid (two draws of rng, u first).
-TRAZO_HD Vec3 cellPoint(const AreaLightData& light, uint32_t s, SampleStream& rng) {
-    const float su = (float(s % light.cellsU) + rng.next()) / float(light.cellsU);
-    const float sv = (float(s / light.cellsU) + rng.next()) / float(light.cellsV);
-    return light.rect.center + light.rect.halfU * (2.0f * su - 1.0f) + light.rect.halfV * (2.0f * sv - 1.0f);
-}
-
-#if TRAZO_SHADOW_PACKETS
 // Host: blocks of fewer cells take shadeFromPoint ray by ray (a packet's set-up costs more than it saves).
 constexpr uint32_t kMinShadowPacket = 4;
 
@@ -367,40 +286,6 @@ inline void directPointLightsTogether(const SceneView& scene, const ShadingPoint
         }
     }
     directLightOfLanes(scene, q, q.reflecting(at), out, rays);
-}
-#endif
-
-// F: the scene's specialised feature bits (sample_variants.h); without kFeatureAreaLights the area-light
-// loop is compiled out. lightBlock: the StrataBlocks target for the area lights' cells at this point;
-// rotation: StrataKey::block's (the index of the indirect direction that found this point).
-template <FeatureMask F>
-TRAZO_HD Vec3 directLight(const SceneView& scene, const ShadingPoint& sp, const MaterialData& m,
-                          const StrataKey& strata, uint32_t lightBlock, uint32_t rotation, SampleStream& rng,
-                          uint32_t& rays) {
-    Vec3 sum(0.0f);
-    const PointBrdf brdf(sp, m);
-    if (!brdf.reflects()) return sum;  // Shade is 0 for every light: no shadow rays
-    for (uint32_t i = 0; i < scene.pointLights.count; ++i) {
-        const PointLightData& light = scene.pointLights[i];
-        sum += shadeFromPoint(scene, sp, brdf, light.position, light.color, rays);
-    }
-    if constexpr ((F & kFeatureAreaLights) != 0) {
-    for (uint32_t i = 0; i < scene.areaLights.count; ++i) {
-        const AreaLightData& light = scene.areaLights[i];
-        const StrataBlock cells =
-            strata.block(kGridAreaLightBase + i, light.cellsU * light.cellsV, lightBlock, rotation);
-        Vec3 lightSum(0.0f);
-#if TRAZO_SHADOW_PACKETS
-        if (cells.size >= kMinShadowPacket) {
-            lightSum = shadeCellsTogether(scene, sp, brdf, light, cells, rng, rays);
-        } else
-#endif
-        for (uint32_t j = 0; j < cells.size; ++j)
-            lightSum += shadeFromPoint(scene, sp, brdf, cellPoint(light, cells.stratum(j), rng), light.color, rays);
-        sum += cells.size == 1 ? lightSum : lightSum / float(cells.size);
-    }
-    }
-    return sum;
 }
 
 }  // namespace trazo

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "integrator/render_sample.h"
+#include "integrator/thesis/thesis_integrator.h"
 #include "support/chi_square.h"
 
 namespace trazo {

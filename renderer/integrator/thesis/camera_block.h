@@ -1,18 +1,18 @@
 // Host only: the shading of a block of pixels whose camera rays were traced together (camera_packet.h), with the rays
 // each pixel's shading sends traced together across the block: the shadow rays of all the block's points towards each
 // point light, and the indirect directions of all its points, each ray from its own origin. For the render variants
-// whose every ray is one of those (point lights, and at most indirect light); renderSample given the same hits, bit
+// whose every ray is one of those (point lights, and at most indirect light); thesisSample given the same hits, bit
 // for bit, is what each pixel gets.
 #pragma once
 
 #include <new>
 
-#include "integrator/nearest_packet.h"
-#include "integrator/render_sample.h"
+#include "integrator/packets/nearest_packet.h"
+#include "integrator/thesis/thesis_integrator.h"
 
 namespace trazo {
 
-// Whether renderSample<F> of a pixel given its camera ray is one value in every pass: F has nothing that draws a
+// Whether thesisSample<F> of a pixel given its camera ray is one value in every pass: F has nothing that draws a
 // random number or picks a stratum (no area lights, reflection, refraction, indirect light or rare features), so with
 // one camera ray per pixel (cameraPacketsApply) only point lights' hard shadows remain.
 template <FeatureMask F>
@@ -129,7 +129,7 @@ inline void indirectOfPoints(const SceneView& scene, BlockPoints& b, uint64_t at
 
 }  // namespace block_detail
 
-// Host: renderSample<F>(scene, frame, imageX[i], imageY[i], pass, rays, &hits[i]) of each pixel of `active` into
+// Host: thesisSample<F>(scene, frame, imageX[i], imageY[i], pass, rays, &hits[i]) of each pixel of `active` into
 // color[i], for F where blockShadingServes, bit for bit; returns the rays. The shadow rays of the block's points
 // towards each point light are traced together, and so are their indirect directions (indirectOfPoints).
 template <FeatureMask F>
@@ -172,7 +172,7 @@ inline uint32_t shadeBlock(const SceneView& scene, const FrameParams& frame, con
         const int i = __builtin_ctzll(m);
         color[i] += Vec3(1.0f) * (local[i] * b.directWeight[i]);
     }
-    for (uint64_t m = active; m; m &= m - 1) {  // renderSample's sum of its one position
+    for (uint64_t m = active; m; m &= m - 1) {  // thesisSample's sum of its one position
         const int i = __builtin_ctzll(m);
         Vec3 sample(0.0f);
         sample += color[i];

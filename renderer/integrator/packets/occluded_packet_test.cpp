@@ -14,12 +14,12 @@
 
 #include "backends/cpu/cpu_kernels.h"
 #include "flatten/flatten.h"
-#include "integrator/direct_light.h"
-#include "integrator/packet_test_scenes.h"
+#include "integrator/thesis/direct_light.h"
+#include "integrator/packets/packet_test_scenes.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"
 
-#if TRAZO_SHADOW_PACKETS
+#if TRAZO_HOST_PACKETS
 namespace trazo {
 namespace {
 
@@ -231,4 +231,4 @@ TEST(OccludedPacket, OwnOriginsMatchOccludedRayByRay) {
 
 }  // namespace
 }  // namespace trazo
-#endif  // TRAZO_SHADOW_PACKETS
+#endif  // TRAZO_HOST_PACKETS

@@ -1,17 +1,15 @@
-// renderSample(): one sample of one pixel, (scene, frame, pixel, pass) -> RGB. The whole integrator of
-// SPEC §5 and §6, written once for the CPU backend and the CUDA kernel. The recursion of Color(depth) becomes
-// an explicit, bounded stack of pending rays, each carrying the weight its colour enters the pixel with.
-// Template parameter F: the feature bits the code is specialised for (sample_variants.h); code for a
-// feature outside F is compiled out, and the all-features instance is the oracle every variant must match.
+// traceCameraRay(): Color(0) along one camera ray, the thesis's model of SPEC §5 and §6, written once for the
+// CPU backend and the CUDA kernel. The recursion of Color(depth) becomes an explicit, bounded stack of pending
+// rays, each carrying the weight its colour enters the pixel with. Template parameter F: the feature bits the
+// code is specialised for (thesis_integrator.h); code for a feature outside F is compiled out, and the
+// all-features instance is the oracle every variant must match.
 #pragma once
 
-#include "integrator/direct_light.h"
-#include "integrator/frame_params.h"
-#include "integrator/indirect_light.h"
 #include "integrator/scattering.h"
 #include "integrator/subsurface.h"
 #include "integrator/surface.h"
-#include "integrator/thin_lens.h"
+#include "integrator/thesis/direct_light.h"
+#include "integrator/thesis/indirect_light.h"
 #include "shading/dispersion.h"
 #include "shading/fresnel.h"
 
@@ -40,12 +38,6 @@ union PendingSlot {
     PendingRay ray;
     TRAZO_HD PendingSlot() {}
 };
-
-// Antialiasing position s of the k×k sub-pixel centres (SPEC §5 Pixel).
-TRAZO_HD void antialiasingPosition(uint32_t k, uint32_t s, uint32_t px, uint32_t py, float& x, float& y) {
-    x = float(px) + (float(s % k) + 0.5f) / float(k);
-    y = float(py) + (float(s / k) + 0.5f) / float(k);
-}
 
 // Whether a ray at this reflection depth may still send a reflected one (ReflectionSteps, and what the
 // pending ray's depth field holds).
@@ -109,7 +101,7 @@ template <FeatureMask F>
 TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const StrataKey& pixelStrata,
                              const StrataBlocks& blocks, SampleStream& rng, uint32_t& rays,
                              const TracedRay* given = nullptr) {
-#if !TRAZO_SHADOW_PACKETS
+#if !TRAZO_HOST_PACKETS
     (void)given;  // only the host's tile loop passes one
 #endif
     const RenderSettings& settings = scene.settings;
@@ -126,7 +118,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         ++rays;
         SurfaceHit hit;
         bool found;
-#if TRAZO_SHADOW_PACKETS
+#if TRAZO_HOST_PACKETS
         if (given) {  // the first ray popped is the camera ray
             hit = given->hit;
             found = given->found;
@@ -253,49 +245,6 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         }
     }
     return color;
-}
-
-// The camera ray through image position (x, y): the pinhole's, or with a lens (SPEC §6) one point of a stratum
-// of its 2q² strata, a grid of its own: position j of a pass's antialiasing block takes the lens block j places
-// on, so the positions of one pass take different lens strata and each visits every one per 2q² passes.
-TRAZO_HD Ray cameraRay(const CameraFrame& camera, const RenderSettings& s, float x, float y,
-                       const StrataKey& pixelStrata, uint32_t j, SampleStream& rng) {
-    if (s.aperture == 0.0f) return generateCameraRay(camera, x, y);
-    const uint32_t q = s.lensQuality;
-    const uint32_t stratum = pixelStrata.block(kGridLens, 2u * q * q, 1u, j).stratum(0);
-    float lensX, lensY;
-    const float u1 = rng.next();
-    lensStratumPoint(stratum, q, u1, rng.next(), lensX, lensY);
-    return thinLensRay(camera, x, y, s.aperture, s.focalDistance, lensX, lensY);
-}
-
-// One sample of one pixel: the pass's block of antialiasing positions, averaged. `given` (host x86 only, else
-// null): the scene's antialiasing side is 1, and this is the camera ray of the pixel's one position, traced.
-template <FeatureMask F>
-TRAZO_HD Vec3 renderSample(const SceneView& scene, const FrameParams& frame, uint32_t px, uint32_t py,
-                           uint32_t pass, uint32_t& rays, const TracedRay* given = nullptr) {
-    const uint32_t pixelIndex = py * frame.camera.width + px;
-    SampleStream rng(frame.seed, pixelIndex, pass);
-    const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, kSampleTreeRoot};
-#if TRAZO_SHADOW_PACKETS
-    if (given) {
-        Vec3 color(0.0f);  // the sum below, of one position
-        color += traceCameraRay<F>(scene, given->ray, pixelStrata, frame.blocks, rng, rays, given);
-        return color;
-    }
-#else
-    (void)given;  // only the host's tile loop passes one
-#endif
-    const uint32_t k = antialiasingSide(scene.settings.antialiasing);
-    const StrataBlock positions = pixelStrata.block(kGridAntialiasing, k * k, frame.blocks.antialiasing);
-    Vec3 color(0.0f);
-    for (uint32_t j = 0; j < positions.size; ++j) {
-        float x, y;
-        antialiasingPosition(k, positions.stratum(j), px, py, x, y);
-        const Ray ray = cameraRay(frame.camera, scene.settings, x, y, pixelStrata, j, rng);
-        color += traceCameraRay<F>(scene, ray, pixelStrata, frame.blocks, rng, rays);
-    }
-    return positions.size == 1 ? color : color / float(positions.size);
 }
 
 }  // namespace trazo

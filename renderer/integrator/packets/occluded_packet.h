@@ -10,7 +10,7 @@
 
 #include <type_traits>
 
-#include "integrator/packet_lanes.h"
+#include "integrator/packets/packet_lanes.h"
 #include "objects/rectangle.h"
 
 namespace trazo {

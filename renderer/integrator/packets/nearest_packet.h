@@ -12,7 +12,7 @@
 
 #include <type_traits>
 
-#include "integrator/packet_lanes.h"
+#include "integrator/packets/packet_lanes.h"
 
 namespace trazo {
 

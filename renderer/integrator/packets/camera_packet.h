@@ -1,14 +1,14 @@
 // Host only: the camera rays of up to 64 pixels aimed together, to be traced as one packet (nearest_packet.h's
-// tracePacket: they share the pinhole as origin) for renderSample's given hit.
+// tracePacket: they share the pinhole as origin) for an integrator's given hit.
 #pragma once
 
 #include "integrator/camera_frame.h"
-#include "integrator/nearest_packet.h"
-#include "integrator/render_sample.h"
+#include "integrator/camera_ray.h"
+#include "integrator/packets/nearest_packet.h"
 
 namespace trazo {
 
-// renderSample's camera ray of pixel (px, py) when the antialiasing side is 1: its one position, the centre.
+// cameraRay's ray of pixel (px, py) when the antialiasing side is 1: its one position, the centre.
 inline Ray centreCameraRay(const CameraFrame& camera, uint32_t px, uint32_t py) {
     float x, y;
     antialiasingPosition(1, 0, px, py, x, y);

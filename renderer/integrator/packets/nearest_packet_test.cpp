@@ -9,11 +9,11 @@
 #include <random>
 
 #include "backends/cpu/cpu_kernels.h"
-#include "integrator/direct_light.h"
-#include "integrator/packet_test_scenes.h"
+#include "integrator/thesis/direct_light.h"
+#include "integrator/packets/packet_test_scenes.h"
 
-#if TRAZO_SHADOW_PACKETS
-#include "integrator/camera_packet.h"
+#if TRAZO_HOST_PACKETS
+#include "integrator/packets/camera_packet.h"
 
 namespace trazo {
 namespace {
@@ -209,9 +209,9 @@ TEST(NearestPacket, RenderSampleWithGivenHitsIsTheSame) {
                 for (int i = 0; i < kPacketRays; ++i) {
                     uint32_t raysOne = 0, raysGiven = 0;
                     const uint32_t px = bx + i % 8, py = by + i / 8;
-                    const Vec3 one = renderSample<kSpecialisedFeatures>(scene.view, frame, px, py, 0, raysOne);
+                    const Vec3 one = thesisSample<kSpecialisedFeatures>(scene.view, frame, px, py, 0, raysOne);
                     const Vec3 given =
-                        renderSample<kSpecialisedFeatures>(scene.view, frame, px, py, 0, raysGiven, &hits[i]);
+                        thesisSample<kSpecialisedFeatures>(scene.view, frame, px, py, 0, raysGiven, &hits[i]);
                     ASSERT_EQ(std::memcmp(&one, &given, sizeof one), 0) << "seed " << seed << " pixel " << px << ", " << py;
                     ASSERT_EQ(raysOne, raysGiven);
                     ++compared;
@@ -224,4 +224,4 @@ TEST(NearestPacket, RenderSampleWithGivenHitsIsTheSame) {
 
 }  // namespace
 }  // namespace trazo
-#endif  // TRAZO_SHADOW_PACKETS
+#endif  // TRAZO_HOST_PACKETS
