@@ -13,6 +13,14 @@ namespace {
 // The viewer's background: behind the panels and around the image (linear RGB, written to the framebuffer as is).
 constexpr float kBackground[3] = {0.11f, 0.11f, 0.12f};
 
+// "what: " and GL's info log of a shader that did not compile or a program that did not link.
+std::string infoLog(const char* what, GLuint object, bool program) {
+    char log[2048] = {};
+    if (program) glGetProgramInfoLog(object, sizeof log, nullptr, log);
+    else glGetShaderInfoLog(object, sizeof log, nullptr, log);
+    return std::string(what) + ": " + log;
+}
+
 GLuint compileShader(GLenum kind, const char* source, std::string& error) {
     const GLuint shader = glCreateShader(kind);
     glShaderSource(shader, 1, &source, nullptr);
@@ -20,9 +28,7 @@ GLuint compileShader(GLenum kind, const char* source, std::string& error) {
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-        char log[2048] = {};
-        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-        error = std::string(kind == GL_VERTEX_SHADER ? "display.vert" : "display.frag") + ": " + log;
+        error = infoLog(kind == GL_VERTEX_SHADER ? "display.vert" : "display.frag", shader, false);
         glDeleteShader(shader);
         return 0;
     }
@@ -65,9 +71,7 @@ bool Display::init(std::string& error) {
     GLint ok = GL_FALSE;
     glGetProgramiv(program_, GL_LINK_STATUS, &ok);
     if (!ok) {
-        char log[2048] = {};
-        glGetProgramInfoLog(program_, sizeof log, nullptr, log);
-        error = std::string("display shaders: ") + log;
+        error = infoLog("display shaders", program_, true);
         return false;
     }
     uImageRect_ = glGetUniformLocation(program_, "imageRect");
