@@ -5,9 +5,9 @@
 #include <ctime>
 #include <string>
 
+#include "model/panel_state.h"
 #include "model/viewer_session.h"
 #include "scene/scene.h"
-#include "view/panels.h"
 
 namespace trazo {
 

@@ -14,10 +14,10 @@
 
 #include "model/edit_history.h"
 #include "model/move_gesture.h"
+#include "model/panel_state.h"
 #include "model/recovery_file.h"
 #include "model/selection_controller.h"
 #include "model/viewer_session.h"
-#include "view/objects_panel.h"
 
 namespace trazo {
 

@@ -9,15 +9,10 @@
 #include <vector>
 
 #include "backends/backend.h"
+#include "model/panel_state.h"
 #include "model/view_transform.h"
 
 namespace trazo {
-
-struct ToneSettings {
-    float exposureStops = 0.0f;
-    int mode = 0;  // 0: the seed's clamp (what a PNG stores), 1: sRGB, 2: filmic
-};
-
 
 enum class DisplayPath { None, Interop, Host };
 const char* displayPathName(DisplayPath path);

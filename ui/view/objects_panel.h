@@ -8,18 +8,11 @@
 
 #include "model/dirty_flags.h"
 #include "model/object_commands.h"
+#include "model/panel_state.h"
 #include "scene/scene.h"
 #include "view/param_editor.h"
 
 namespace trazo {
-
-struct ObjectsPanelState {
-    Selection selection;             // shared with picking in the image (and cleared by Escape)
-    bool scrollToSelection = false;  // set when the selection changed elsewhere: the list scrolls to it once
-    Gestures gestures;               // also what the viewer's own drags take their ids from (beginGesture)
-    char filePath[1024] = {};        // an .obj or .csg to add, or to become the selected one's Source
-    std::string status;              // why the last add or Source change failed
-};
 
 struct ObjectsPanelActions {
     std::string label;       // the undo step's name when something changed ("Edit Sphere 2", "Add Box 3")

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "model/dirty_flags.h"
+#include "model/panel_state.h"
 #include "model/screen_layout.h"
 #include "scene/scene.h"
 #include "view/display.h"
@@ -35,22 +36,6 @@ struct RenderInfo {
 struct MenuInfo {
     bool canUndo = false, canRedo = false, hasSelection = false, fitted = true;
     std::string undoLabel, redoLabel;  // "Move Sphere 2", shown after Undo / Redo
-};
-
-struct PanelState {
-    int material = 0;  // selected in the Materials panel
-    ToneSettings tone;
-    BackendChoice backend = BackendChoice::Cpu;  // the Render panel's choice: Cpu or Cuda
-    int targetPasses = 0;      // stop after this many one-stratum passes' worth of samples; 0 = keep going
-    bool sizeFollowsWindow = false;  // the image area's size
-    float targetErrorPercent = 0;    // stop when the estimated relative error is below it; 0 = keep going
-    float panelWidth = kPanelWidth;  // window coordinates; its right edge drags it
-    char openPath[1024] = {};
-    bool focusOpenPath = false;  // the path field takes the keyboard next frame (Ctrl+O)
-    std::vector<std::string> openMessages;  // why the last open failed (file:line: error: ...)
-    char screenshotPath[1024] = {};
-    char scenePath[1024] = {};
-    std::string status;  // last export message
 };
 
 struct PanelActions {

@@ -10,20 +10,13 @@
 #include <vector>
 
 #include "model/dirty_flags.h"
+#include "model/panel_state.h"
 #include "model/param_widget.h"
 #include "scene/param_spec.h"
 
 namespace trazo {
 
-// Gesture ids for EditHistory::commit: the edits of one held widget share one; grabbing a widget (or the
-// viewer starting a drag, beginGesture) hands out the next. One-shot edits (a click, a combo choice) get 0.
-struct Gestures {
-    uint64_t serial = 0;  // the last id handed out
-    uint64_t held = 0;    // the id of the widget held now
-    uint64_t edited = 0;  // the gesture of this frame's latest edit (startGestures clears it)
-};
-inline uint64_t beginGesture(Gestures& g) { return ++g.serial; }
-// Call at the start of a panel, every frame.
+// The widgets' side of Gestures (model/panel_state.h). Call at the start of a panel, every frame.
 void startGestures(Gestures& g);
 // Call right after a widget, with whether it changed its value.
 void trackGesture(Gestures& g, bool edited);
