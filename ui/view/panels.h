@@ -10,7 +10,6 @@
 #include "model/panel_state.h"
 #include "model/screen_layout.h"
 #include "scene/scene.h"
-#include "view/display.h"
 #include "view/objects_panel.h"
 #include "view/viewer_command.h"
 
