@@ -7,7 +7,7 @@
 #include "headless_render.h"
 #include "merge_command.h"
 #if defined(TRAZO_HAS_VIEWER)
-#include "viewer_app.h"
+#include "view/viewer_app.h"
 #endif
 
 int main(int argc, char** argv) {

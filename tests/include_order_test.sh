@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The folders of renderer/ include only folders to their left (docs/ARCHITECTURE.md, "Folders and include
 # order"): core, io → shading, geometry, accel → objects → scene → flatten → integrator → backends → render;
-# image sits on core and io only. Tests (*_test.cpp) aside. Prints each include that breaks the order.
+# image sits on core and io only. Tests (*_test.cpp) aside. And ui/model/ (trazo_ui_model, no window) includes
+# nothing from ui/view/, its tests included: trazo_tests builds them without the viewer. Prints each include
+# that breaks the order.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 cd "$repo/renderer"
@@ -38,5 +40,11 @@ while IFS= read -r line; do
     fi
 done < <(grep -rn --include='*.h' --include='*.cpp' --include='*.cuh' --include='*.cu' -E '^#include "[a-z_]+/' . \
              | sed 's|^\./||' | grep -v '_test\.cpp:' | sed -E 's/^([^:]+):[0-9]+:/\1:/')
-if [ $bad = 0 ]; then echo "include order: every renderer/ folder includes only folders to its left"; fi
+while IFS= read -r file; do
+    echo "ui/$file: includes view/ (the model must not depend on the view)"
+    bad=1
+done < <(cd "$repo/ui" && grep -rl --include='*.h' --include='*.cpp' -E '^#include "view/' model || true)
+if [ $bad = 0 ]; then
+    echo "include order: every renderer/ folder includes only folders to its left; ui/model/ includes nothing from ui/view/"
+fi
 exit $bad

@@ -1,11 +1,11 @@
 // The viewer's widget limits against the reader: for every row a panel edits, both ends of its widget's
 // range (widgetFor) pass the reader's checks and the render's bounds, and the next value outside each end is
-// refused (an error, or Antialiasing's warning). Cross-module: scene tables, ui/param_widget.h, render bounds.
+// refused (an error, or Antialiasing's warning). Cross-module: scene tables, ui/model/param_widget.h, render bounds.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "param_widget.h"
+#include "model/param_widget.h"
 #include "render/strata_plan.h"
 #include "scene/block_table.h"
 

@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "model/viewer_session.h"
 #include "render/error_estimate.h"
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
 #include "scene/scene_reader.h"
-#include "viewer_session.h"
 
 namespace {
 

@@ -15,8 +15,8 @@
 
 #include "backends/backend.h"
 #include "flatten/flatten.h"
+#include "model/viewer_session.h"
 #include "scene/scene_reader.h"
-#include "viewer_session.h"
 
 using namespace trazo;
 

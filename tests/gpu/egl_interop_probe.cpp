@@ -180,7 +180,7 @@ unsigned makeBuffer(const Gl& gl, size_t bytes) {
     return pbo;
 }
 
-// What the viewer does on a resize (ui/display.cpp): let go of the interop registration, then re-specify the
+// What the viewer does on a resize (ui/view/display.cpp): let go of the interop registration, then re-specify the
 // buffer's store (Display::allocate); the next resolve registers it again.
 void respecify(const Gl& gl, trazo::CudaGlDisplay& display, unsigned pbo, size_t bytes) {
     trazo::releaseCudaGlDisplay(display);
