@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The folders of renderer/ include only folders to their left (docs/ARCHITECTURE.md, "Folders and include
-# order"): core, io → shading, geometry, accel → objects → scene → flatten → integrator → backends → render;
+# order"): core, io → shading, geometry, accel → lights → objects → scene → flatten → integrator → backends → render;
 # image sits on core and io only. Tests (*_test.cpp) aside. And ui/model/ (trazo_ui_model, no window) includes
 # nothing from ui/view/, its tests included: trazo_tests builds them without the viewer. Prints each include
 # that breaks the order.
@@ -11,12 +11,13 @@ rank() {
     case $1 in
         core | io) echo 0 ;;
         shading | geometry | accel) echo 1 ;;
-        objects) echo 2 ;;
-        scene) echo 3 ;;
-        flatten) echo 4 ;;
-        integrator) echo 5 ;;
-        backends) echo 6 ;;
-        render) echo 7 ;;
+        lights) echo 2 ;;
+        objects) echo 3 ;;
+        scene) echo 4 ;;
+        flatten) echo 5 ;;
+        integrator) echo 6 ;;
+        backends) echo 7 ;;
+        render) echo 8 ;;
         image) echo 1 ;;  # on core and io only (below); render/ and the app write images
         *) echo 99 ;;
     esac

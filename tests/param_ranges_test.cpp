@@ -60,8 +60,8 @@ TEST(ParamRanges, EveryWidgetSpansExactlyWhatTheReaderAccepts) {
     const int widgets =
         expectWidgetLimitsAreTheReaders<SceneSettings>(sceneSettingsTable(), [](Scene& s) -> auto& { return s.settings; }) +
         expectWidgetLimitsAreTheReaders<Camera>(cameraTable(), [](Scene& s) -> auto& { return s.camera; }) +
-        expectWidgetLimitsAreTheReaders<PointLight>(pointLightTable(), [](Scene& s) -> auto& { return s.pointLights.emplace_back(); }) +
-        expectWidgetLimitsAreTheReaders<AreaLight>(areaLightTable(), [](Scene& s) -> auto& { return s.areaLights[0]; });
+        expectWidgetLimitsAreTheReaders<PointLight>(lightTable<PointLight>(), [](Scene& s) -> auto& { return s.pointLights.emplace_back(); }) +
+        expectWidgetLimitsAreTheReaders<AreaLight>(lightTable<AreaLight>(), [](Scene& s) -> auto& { return s.areaLights[0]; });
     // Materials: the panel edits the reader's draft.
     static MaterialDraft draft;
     const int materialWidgets = expectWidgetLimitsAreTheReaders<MaterialDraft>(
@@ -72,8 +72,8 @@ TEST(ParamRanges, EveryWidgetSpansExactlyWhatTheReaderAccepts) {
         for (const auto& row : table) rows += row.info.kind == ValueKind::Real || row.info.kind == ValueKind::Int;
         return rows;
     };
-    EXPECT_EQ(widgets, numericRows(sceneSettingsTable()) + numericRows(cameraTable()) + numericRows(pointLightTable()) +
-                           numericRows(areaLightTable()));
+    EXPECT_EQ(widgets, numericRows(sceneSettingsTable()) + numericRows(cameraTable()) + numericRows(lightTable<PointLight>()) +
+                           numericRows(lightTable<AreaLight>()));
     EXPECT_EQ(materialWidgets, numericRows(materialTable()));
     EXPECT_GE(materialWidgets, 8);  // the colours and the scalars of SPEC §3
 }
@@ -89,7 +89,7 @@ TEST(ParamRanges, RenderBoundedSettingsStopAtTheirLimits) {
     EXPECT_EQ(maxOf(sceneSettingsTable(), "ReflectionQuality"), 724);
     EXPECT_EQ(maxOf(sceneSettingsTable(), "ReflectionSteps"), 65536);
     EXPECT_EQ(maxOf(sceneSettingsTable(), "RenderWidth"), 16384);
-    EXPECT_EQ(maxOf(areaLightTable(), "Subdivision"), 1024);
+    EXPECT_EQ(maxOf(lightTable<AreaLight>(), "Subdivision"), 1024);
 }
 
 TEST(ParamRanges, FitToCheckKeepsEditsReadable) {

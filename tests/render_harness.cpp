@@ -62,27 +62,21 @@ void scaleSceneAboutOrigin(Scene& scene, double factor) {
     // Rounded from double (scene/object_basics.h), so a coordinate's only new error is its final rounding.
     scene.camera.pov = scaledPoint(scene.camera.pov, factor);
     scene.camera.poi = scaledPoint(scene.camera.poi, factor);
-#define TRAZO_X(Shape, array, Kind, keyword) \
+#define TRAZO_X(Shape, array, Kind, ...) \
     for (Kind & object : scene.array) scaleAboutOrigin(object, factor);
     TRAZO_OBJECT_KINDS(TRAZO_X)
+    TRAZO_LIGHT_KINDS(TRAZO_X)
 #undef TRAZO_X
-    for (PointLight& light : scene.pointLights) light.position = scaledPoint(light.position, factor);
-    for (AreaLight& light : scene.areaLights) {
-        light.position = scaledPoint(light.position, factor);
-        light.width = float(light.width * factor);
-        light.height = float(light.height * factor);
-    }
 }
 
 void translateScene(Scene& scene, Vec3 delta) {
     scene.camera.pov += delta;
     scene.camera.poi += delta;
-#define TRAZO_X(Shape, array, Kind, keyword) \
+#define TRAZO_X(Shape, array, Kind, ...) \
     for (Kind & object : scene.array) translate(object, delta);
     TRAZO_OBJECT_KINDS(TRAZO_X)
+    TRAZO_LIGHT_KINDS(TRAZO_X)
 #undef TRAZO_X
-    for (PointLight& light : scene.pointLights) light.position += delta;
-    for (AreaLight& light : scene.areaLights) light.position += delta;
 }
 
 double rmse(const RenderedImage& a, const RenderedImage& b) {

@@ -16,7 +16,6 @@ namespace trazo {
 
 namespace {
 
-constexpr float kDegrees = 3.14159265358979f / 180.0f;
 
 MaterialData toMaterialData(const Material& m) {
     MaterialData d{};
@@ -115,18 +114,6 @@ uint32_t traversalStackNeed(const SceneArrays& a) {
 
 }  // namespace
 
-void areaLightAxes(Vec3 normal, float rollAngle, Vec3& u, Vec3& v) {
-    const Vec3 n = normalize(normal);
-    // Within 0.1° of ±Y the reference axis becomes +Z (SPEC §3).
-    const bool nearVertical = fabsf(n.y) > cosf(0.1f * kDegrees);
-    const Vec3 a = nearVertical ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
-    const Vec3 u0 = normalize(cross(a, n));
-    const Vec3 v0 = cross(n, u0);
-    const float c = cosf(rollAngle), s = sinf(rollAngle);
-    u = u0 * c + v0 * s;
-    v = v0 * c - u0 * s;
-}
-
 FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
     FlattenResult result;
     SceneArrays& out = result.arrays;
@@ -158,13 +145,10 @@ FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
     out.materials = std::move(materials.data);
     flattenTextures(scene, out);
 
-    for (const PointLight& l : scene.pointLights) out.pointLights.push_back({l.position, l.color});
-    for (const AreaLight& l : scene.areaLights) {
-        Vec3 u, v;
-        areaLightAxes(l.direction, l.rollAngle, u, v);
-        const RectangleShape rect{l.position, u * (0.5f * l.width), v * (0.5f * l.height), normalize(l.direction)};
-        out.areaLights.push_back({rect, l.color, (uint32_t)l.subdivisionX, (uint32_t)l.subdivisionY});
-    }
+#define TRAZO_X(Data, array, Kind, ...) \
+    for (const Kind& light : scene.array) appendLight(light, out);
+    TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
 
     const Camera& c = scene.camera;
     const float focus = c.focalDistance > 0.0f ? c.focalDistance : length(c.poi - c.pov);  // 0: POI is in focus
@@ -173,8 +157,10 @@ FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
                                   c.aperture, focus, (uint32_t)std::max(c.lensQuality, 1)};
 
     FeatureMask f = 0;
-    if (!out.pointLights.empty()) f |= kFeaturePointLights;
-    if (!out.areaLights.empty()) f |= kFeatureAreaLights;
+#define TRAZO_X(Data, array, Kind, keyword, label, feature) \
+    if (!out.array.empty()) f |= feature;
+    TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
     for (const ObjectRef& o : out.objects) f |= materialFeatures(out.materials[o.material], out.settings);
     if (s.indirectQuality >= 1 && s.colorBleeding > 0.0f) f |= kFeatureIndirect;
     if (!scene.meshes.empty()) f |= kFeatureMeshes;

@@ -42,7 +42,5 @@ struct FlattenResult {
 // flatten(scene) without `previous`.
 FlattenResult flatten(const Scene& scene, FlattenResult* previous = nullptr);
 
-// u and v axes of an area light's rectangle (SPEC §3 AreaLight), unit length, before Width/Height.
-void areaLightAxes(Vec3 normal, float rollAngle, Vec3& u, Vec3& v);
 
 }  // namespace trazo

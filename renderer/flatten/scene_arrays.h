@@ -7,8 +7,9 @@
 
 #include "accel/wide_bvh_node.h"
 #include "core/vec3.h"
-#include "objects/light_data.h"
-#include "objects/rectangle.h"
+#include "lights/area_light.h"
+#include "lights/point_light.h"
+#include "lights/rectangle.h"
 #include "objects/scene_view.h"
 #include "objects/visit_object.h"  // every object kind's header
 #include "shading/material.h"

@@ -4,8 +4,9 @@
 #pragma once
 
 #include "accel/bvh_traverse.h"
-#include "objects/light_data.h"
-#include "objects/rectangle.h"
+#include "lights/area_light.h"
+#include "lights/point_light.h"
+#include "lights/rectangle.h"
 #include "objects/visit_object.h"
 
 namespace trazo {

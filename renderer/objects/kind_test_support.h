@@ -16,7 +16,7 @@
 #include "core/ray.h"
 #include "objects/box.h"
 #include "objects/cylinder.h"
-#include "objects/rectangle.h"
+#include "lights/rectangle.h"
 #include "objects/sphere.h"
 
 namespace trazo::kind_test {

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "objects/kind_test_support.h"
-#include "objects/rectangle.h"
+#include "lights/rectangle.h"
 
 namespace trazo {
 namespace {

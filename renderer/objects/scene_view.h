@@ -9,6 +9,7 @@
 #include "core/hd.h"
 #include "core/render_settings.h"
 #include "core/vec3.h"
+#include "lights/light_kind_list.h"
 #include "objects/object_kinds.h"
 
 namespace trazo {
@@ -23,21 +24,18 @@ struct TriangleCorners;
 struct WideBvhNode;
 struct WideBvhNode8;
 struct MaterialData;
-struct PointLightData;
-struct AreaLightData;
 struct TextureData;
 struct SceneArrays;  // flatten/scene_arrays.h: the owning host copy
 
 // Every array of the flattened scene, once: the object kinds' shape arrays (objects/object_kind_list.h), then
-// the rest. SceneArrays, SceneView, hostView() and the backends' uploads are all generated from this list,
-// so adding an array is a one-line change. X(element type, member name, ...).
+// the rest, the light kinds' arrays (lights/light_kind_list.h) among them. SceneArrays, SceneView, hostView() and
+// the backends' uploads are all generated from this list, so adding an array is a one-line change. X(element type, member name, ...).
 #define TRAZO_SCENE_ARRAYS(X)           \
     TRAZO_OBJECT_KINDS(X)               \
     X(CsgNodeData, csgNodes)            \
     X(ObjectRef, objects)               \
     X(MaterialData, materials)          \
-    X(PointLightData, pointLights)      \
-    X(AreaLightData, areaLights)        \
+    TRAZO_LIGHT_KINDS(X)                \
     X(TextureData, textures)            \
     X(Vec3, texels)                     \
     X(WideBvhNode, meshNodes)           \

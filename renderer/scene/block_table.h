@@ -77,8 +77,14 @@ std::span<const ParamSpec<ObjectDraft<T>>> objectTable();
     std::span<const ParamSpec<ObjectDraft<Kind>>> objectTable<Kind>();
 TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
-std::span<const ParamSpec<PointLight>> pointLightTable();
-std::span<const ParamSpec<AreaLight>> areaLightTable();
+// The table of each light kind's block (lights/light_kind_list.h): lightTable<PointLight>(), ...
+template <class T>
+std::span<const ParamSpec<T>> lightTable();
+#define TRAZO_X(Data, array, Kind, ...) \
+    template <>                         \
+    std::span<const ParamSpec<Kind>> lightTable<Kind>();
+TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
 
 // CSG-file blocks (SPEC §4); Union, Difference and Intersection share the operation table.
 std::span<const ParamSpec<CsgNodeDraft>> csgSphereTable();

@@ -312,8 +312,9 @@ TEST(BlockTable, EveryRowWritesWhatItReadsBack) {
 #define TRAZO_X(Shape, array, Kind, keyword) expectEveryRowReadsBack(objectTable<Kind>());
     TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
-    expectEveryRowReadsBack(pointLightTable());
-    expectEveryRowReadsBack(areaLightTable());
+#define TRAZO_X(Data, array, Kind, ...) expectEveryRowReadsBack(lightTable<Kind>());
+    TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
     expectEveryRowReadsBack(csgSphereTable());
     expectEveryRowReadsBack(csgBoxTable());
     expectEveryRowReadsBack(csgCylinderTable());

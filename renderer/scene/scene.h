@@ -11,6 +11,7 @@
 #include "core/vec3.h"
 #include "objects/object_kind_list.h"
 #include "scene/diagnostic.h"
+#include "scene/kinds/light_kind_model.h"
 #include "scene/kinds/object_kind_model.h"
 #include "scene/object_basics.h"
 #include "shading/material_fields.h"
@@ -100,25 +101,6 @@ struct Material {
     }
 };
 
-struct PointLight {
-    Vec3 position{0, 0, 0};
-    Vec3 color{1, 1, 1};
-    SourceLocation where;
-};
-
-struct AreaLight {
-    Vec3 color{1, 1, 1};
-    Vec3 position{0, 0, 0};  // centre
-    Vec3 direction{0, -1, 0};  // normal, not necessarily unit length as written
-    float rollAngle = 0.0f;    // radians
-    float width = 1.0f;
-    float height = 1.0f;
-    int subdivisionX = 5;
-    int subdivisionY = 5;
-    SourceLocation where;
-    SourceLocation subdivisionAt;  // the Subdivision line; empty when not recorded (then `where` is used)
-};
-
 struct Scene {
     std::string path;  // the scene file
     SceneSettings settings;
@@ -128,8 +110,9 @@ struct Scene {
 #define TRAZO_X(Shape, array, Kind, keyword) std::vector<Kind> array;
     TRAZO_OBJECT_KINDS(TRAZO_X)  // spheres, boxes, ...: scene/kinds/<kind>.h
 #undef TRAZO_X
-    std::vector<PointLight> pointLights;
-    std::vector<AreaLight> areaLights;
+#define TRAZO_X(Data, array, Kind, ...) std::vector<Kind> array;
+    TRAZO_LIGHT_KINDS(TRAZO_X)  // pointLights, areaLights: scene/kinds/<kind>.h
+#undef TRAZO_X
 };
 
 }  // namespace trazo

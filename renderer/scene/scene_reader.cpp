@@ -62,6 +62,10 @@ private:
     if (id == keyword) return readObjectBlock(block, index, scene_.array);
         TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
+#define TRAZO_X(Data, array, Kind, keyword, ...) \
+    if (id == keyword) return readLightBlock(block, scene_.array);
+        TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
         if (id == "SceneSettings") {
             SceneSettings settings;  // like Camera, the last block wins as a whole
             readParameters(block, sceneSettingsTable(), settings, diags_);
@@ -73,19 +77,17 @@ private:
             readTexture(block, index);
         } else if (id == "Material") {
             readMaterial(block, index);
-        } else if (id == "PointLight") {
-            PointLight light;
-            readParameters(block, pointLightTable(), light, diags_);
-            light.where = block.where;
-            scene_.pointLights.push_back(light);
-        } else if (id == "AreaLight") {
-            AreaLight light;
-            readParameters(block, areaLightTable(), light, diags_);
-            light.where = block.where;
-            scene_.areaLights.push_back(light);
         } else {
             diags_.error(block.where, "unknown block '" + id + "'", didYouMean(id, blockNames(sceneBlocks())));
         }
+    }
+
+    template <class Light>
+    void readLightBlock(const Block& block, std::vector<Light>& lights) {
+        Light light;
+        readParameters(block, lightTable<Light>(), light, diags_);
+        light.where = block.where;
+        lights.push_back(light);
     }
 
     void readCamera(const Block& block) {

@@ -255,7 +255,8 @@ std::span<const ParamSpec<ObjectDraft<Mesh>>> objectTable<Mesh>() {
     return rows;
 }
 
-std::span<const ParamSpec<PointLight>> pointLightTable() {
+template <>
+std::span<const ParamSpec<PointLight>> lightTable<PointLight>() {
     static const std::vector<ParamSpec<PointLight>> rows = withDefaults<PointLight>({
         field("Position", &PointLight::position, "position", Check::LightPosition),
         colour("Color", &PointLight::color, "colour and intensity (no falloff)"),
@@ -263,7 +264,8 @@ std::span<const ParamSpec<PointLight>> pointLightTable() {
     return rows;
 }
 
-std::span<const ParamSpec<AreaLight>> areaLightTable() {
+template <>
+std::span<const ParamSpec<AreaLight>> lightTable<AreaLight>() {
     static const std::vector<ParamSpec<AreaLight>> rows = withDefaults<AreaLight>({
         colour("Color", &AreaLight::color, "colour and intensity (no falloff)"),
         field("Position", &AreaLight::position, "centre of the rectangle", Check::LightPosition),
@@ -342,7 +344,9 @@ const std::vector<BlockInfo>& sceneBlocks() {
 #define TRAZO_X(Shape, array, Kind, keyword) infoOf(keyword, objectTable<Kind>()),
         TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
-        infoOf("PointLight", pointLightTable()),       infoOf("AreaLight", areaLightTable()),
+#define TRAZO_X(Data, array, Kind, keyword, ...) infoOf(keyword, lightTable<Kind>()),
+        TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
     };
     return blocks;
 }

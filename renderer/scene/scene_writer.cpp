@@ -67,8 +67,10 @@ std::string formatScene(const Scene& scene, const std::string& scenePath) {
     writeObjects(out, keyword, objectTable<Kind>(), scene.array, scene, scenePath);
     TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
-    for (const PointLight& l : scene.pointLights) writeBlock(out, "PointLight", pointLightTable(), l, scenePath);
-    for (const AreaLight& l : scene.areaLights) writeBlock(out, "AreaLight", areaLightTable(), l, scenePath);
+#define TRAZO_X(Data, array, Kind, keyword, ...) \
+    for (const Kind& l : scene.array) writeBlock(out, keyword, lightTable<Kind>(), l, scenePath);
+    TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
     return out;
 }
 

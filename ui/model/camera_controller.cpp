@@ -25,8 +25,10 @@ void cameraAxes(const Camera& c, Vec3& forward, Vec3& right, Vec3& up) {
 Aabb sceneBounds(const SceneArrays& arrays) {
     Aabb b;
     if (!arrays.topNodes.empty()) b.grow(wideNodeBounds(arrays.topNodes[0]));
-    for (const PointLightData& l : arrays.pointLights) b.grow(l.position);
-    for (const AreaLightData& l : arrays.areaLights) b.grow(l.rect.center);
+#define TRAZO_X(Data, array, ...) \
+    for (const Data& l : arrays.array) b.grow(lightBounds(l));
+    TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
     return b;
 }
 

@@ -29,9 +29,10 @@ size_t snapshotBytes(const Scene& s) {
     const SceneSettings& t = s.settings;
     size_t bytes = sizeof(Scene) + heapBytes(s.path) + heapBytes(t.where) + heapBytes(t.reflectionQualityAt) +
                    heapBytes(t.reflectionStepsAt) + heapBytes(t.indirectQualityAt);
-    bytes += vectorBytes(s.textures) + vectorBytes(s.materials) + vectorBytes(s.pointLights) + vectorBytes(s.areaLights);
-#define TRAZO_X(Shape, array, Kind, keyword) bytes += vectorBytes(s.array);
+    bytes += vectorBytes(s.textures) + vectorBytes(s.materials);
+#define TRAZO_X(Shape, array, ...) bytes += vectorBytes(s.array);
     TRAZO_OBJECT_KINDS(TRAZO_X)
+    TRAZO_LIGHT_KINDS(TRAZO_X)
 #undef TRAZO_X
     for (const AreaLight& l : s.areaLights) bytes += heapBytes(l.subdivisionAt);
     return bytes;

@@ -24,32 +24,18 @@ decltype(auto) visitKind(SceneRef& scene, ObjectId::Kind kind, F&& f) {
     case ObjectId::Kind::HostKind: return f(scene.array);
         TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
-        case ObjectId::Kind::PointLight: return f(scene.pointLights);
-        case ObjectId::Kind::AreaLight: break;
+#define TRAZO_X(Data, array, HostKind, ...) \
+    case ObjectId::Kind::HostKind: return f(scene.array);
+        TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
     }
-    return f(scene.areaLights);
+    TRAZO_UNREACHABLE();
 }
 
 template <class T>
 constexpr bool kHasTransforms = requires(T t) { t.transforms; };
 template <class T>
 constexpr bool kHasMaterial = requires(T t) { t.material; };
-
-// The lights' bounds and moves; the object kinds' are in scene/kinds/<kind>.h.
-Aabb hostBounds(const PointLight& l) { return Aabb{l.position, l.position}; }
-Aabb hostBounds(const AreaLight& l) {
-    Vec3 u, v;
-    areaLightAxes(l.direction, l.rollAngle, u, v);
-    u = u * (0.5f * l.width);
-    v = v * (0.5f * l.height);
-    Aabb b;
-    for (const Vec3 corner : {l.position - u - v, l.position + u - v, l.position - u + v, l.position + u + v})
-        b.grow(corner);
-    return b;
-}
-
-void translate(PointLight& l, Vec3 d) { l.position += d; }
-void translate(AreaLight& l, Vec3 d) { l.position += d; }
 
 // A Mesh's file: shared with another object of the scene that names it, else read. Null after reporting.
 std::shared_ptr<const MeshData> loadMeshData(const Scene& scene, const std::string& path, Diagnostics& diags) {
@@ -111,10 +97,12 @@ const char* kindKeyword(ObjectId::Kind kind) {
     case ObjectId::Kind::HostKind: return keyword;
         TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
-        case ObjectId::Kind::PointLight: return "PointLight";
-        case ObjectId::Kind::AreaLight: break;
+#define TRAZO_X(Data, array, HostKind, keyword, ...) \
+    case ObjectId::Kind::HostKind: return keyword;
+        TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
     }
-    return "AreaLight";
+    TRAZO_UNREACHABLE();
 }
 
 size_t objectCount(const Scene& scene, ObjectId::Kind kind) {
@@ -137,8 +125,10 @@ std::vector<ObjectId> listObjects(const Scene& scene) {
 std::string describeObject(const Scene& scene, ObjectId id) {
     if (!isValidObject(scene, id)) return "(none)";
     const std::string index = std::to_string(id.index);
-    if (id.kind == ObjectId::Kind::PointLight) return "Point light " + index;
-    if (id.kind == ObjectId::Kind::AreaLight) return "Area light " + index;
+#define TRAZO_X(Data, array, HostKind, keyword, label, ...) \
+    if (id.kind == ObjectId::Kind::HostKind) return label + (" " + index);
+    TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
     const int32_t m = objectMaterial(scene, id);
     std::string what = m >= 0 && size_t(m) < scene.materials.size() ? scene.materials[size_t(m)].name : "default";
     std::string file;
@@ -180,8 +170,10 @@ Aabb objectWorldBounds(const Scene& scene, ObjectId id) {
 }
 
 Vec3 objectAnchor(const Scene& scene, ObjectId id) {
-    if (id.kind == ObjectId::Kind::PointLight) return scene.pointLights.at(id.index).position;
-    if (id.kind == ObjectId::Kind::AreaLight) return scene.areaLights.at(id.index).position;
+#define TRAZO_X(Data, array, HostKind, ...) \
+    if (id.kind == ObjectId::Kind::HostKind) return scene.array.at(id.index).position;
+    TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
     const Aabb b = objectWorldBounds(scene, id);
     return b.empty() ? Vec3(0, 0, 0) : b.centroid();
 }
@@ -196,18 +188,9 @@ ObjectId addObject(Scene& scene, ObjectId::Kind kind, Vec3 at, float size) {
     if (!validSize(size)) size = 1.0f;
     return visitKind(scene, kind, [&](auto& objects) {
         using T = typename std::decay_t<decltype(objects)>::value_type;
-        if constexpr (std::is_same_v<T, PointLight>) {
-            objects.push_back({at, Vec3(1, 1, 1), {}});
-        } else if constexpr (std::is_same_v<T, AreaLight>) {
-            AreaLight light;
-            light.position = at;
-            light.width = light.height = size;
-            objects.push_back(light);
-        } else {
-            std::optional<T> added = newObject(KindTag<T>{}, at, size);
-            if (!added) return ObjectId{kind, uint32_t(objects.size())};  // read from a file: addObjectFromFile
-            objects.push_back(std::move(*added));
-        }
+        std::optional<T> added = newObject(KindTag<T>{}, at, size);
+        if (!added) return ObjectId{kind, uint32_t(objects.size())};  // read from a file: addObjectFromFile
+        objects.push_back(std::move(*added));
         return ObjectId{kind, uint32_t(objects.size() - 1)};
     });
 }

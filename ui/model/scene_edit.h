@@ -14,7 +14,7 @@
 
 namespace trazo {
 
-constexpr int kObjectIdKindCount = int(ObjectId::Kind::AreaLight) + 1;
+constexpr int kObjectIdKindCount = int(ObjectId::kKindCount);
 
 // The kind's block keyword ("Sphere", "CSG", "PointLight", ...).
 const char* kindKeyword(ObjectId::Kind kind);

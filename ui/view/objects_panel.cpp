@@ -48,10 +48,12 @@ DirtyFlags editRowsOf(Scene& scene, ObjectId id, Gestures& gestures) {
     case Kind::HostKind: return editObject(scene.array, id.index, gestures);
         TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
-        case Kind::PointLight: return editRows(pointLightTable(), scene.pointLights[id.index], kDirtyScene, &gestures);
-        case Kind::AreaLight: break;
+#define TRAZO_X(Data, array, HostKind, ...) \
+    case Kind::HostKind: return editRows(lightTable<HostKind>(), scene.array[id.index], kDirtyScene, &gestures);
+        TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
     }
-    return editRows(areaLightTable(), scene.areaLights[id.index], kDirtyScene, &gestures);
+    TRAZO_UNREACHABLE();
 }
 
 // The transform rows' parameter info (name, checks) for a step kind.
@@ -186,8 +188,9 @@ DirtyFlags drawAddButtons(Scene& scene, ObjectsPanelState& state, ObjectsPanelAc
     (HostKind::kReadFromFile ? fromFile : inPlace).push_back({keyword, Kind::HostKind});
     TRAZO_OBJECT_KINDS(TRAZO_X)
 #undef TRAZO_X
-    inPlace.push_back({"Point light", Kind::PointLight});
-    inPlace.push_back({"Area light", Kind::AreaLight});
+#define TRAZO_X(Data, array, HostKind, keyword, label, ...) inPlace.push_back({label, Kind::HostKind});
+    TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
     for (size_t i = 0; i < inPlace.size(); ++i) {
         if (i > 0) ImGui::SameLine();
         if (ImGui::SmallButton(inPlace[i].first))

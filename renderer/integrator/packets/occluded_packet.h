@@ -11,7 +11,7 @@
 #include <type_traits>
 
 #include "integrator/packets/packet_lanes.h"
-#include "objects/rectangle.h"
+#include "lights/rectangle.h"
 
 namespace trazo {
 

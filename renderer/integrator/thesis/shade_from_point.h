@@ -4,7 +4,8 @@
 #include "core/rng.h"
 #include "integrator/scene_intersect.h"
 #include "integrator/shadow_ray.h"
-#include "objects/light_data.h"
+#include "lights/area_light.h"
+#include "lights/point_light.h"
 #include "shading/thesis_brdf.h"
 
 namespace trazo {
@@ -18,13 +19,6 @@ TRAZO_HD Vec3 shadeFromPoint(const SceneView& scene, const ShadingPoint& sp, con
     ++rays;
     if (occluded(scene, Ray{origin, l}, length(x - origin))) return Vec3(0.0f);
     return color * brdf.eval(l);
-}
-
-// The jittered point of cell s of the light's grid (two draws of rng, u first).
-TRAZO_HD Vec3 cellPoint(const AreaLightData& light, uint32_t s, SampleStream& rng) {
-    const float su = (float(s % light.cellsU) + rng.next()) / float(light.cellsU);
-    const float sv = (float(s / light.cellsU) + rng.next()) / float(light.cellsV);
-    return light.rect.center + light.rect.halfU * (2.0f * su - 1.0f) + light.rect.halfV * (2.0f * sv - 1.0f);
 }
 
 }  // namespace trazo
