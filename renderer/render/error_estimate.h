@@ -30,7 +30,7 @@ struct ErrorEstimate {
     uint32_t passes = 0;      // samples per pixel (of the first pixel; all pixels get the same passes)
     uint32_t secondHalfPasses = 0;
     uint32_t probePixels = 0;  // > 0: estimated from an error probe of this many pixels (error_probe.h)
-    bool exact = false;        // 0 by construction: every pass is the same image (strata_plan.h, noSamplingNoise)
+    bool exact = false;        // 0 by construction: every pass is the same image (render_plan.h, noSamplingNoise)
 };
 
 ErrorEstimate estimateError(const std::vector<AccumPixel>& accum);
