@@ -94,7 +94,7 @@ int runMerge(const MergeCommandLine& options) {
                      formatRange(r).c_str(), passes, formatRanges(h.passes).c_str());
 
     const ErrorEstimate estimate = estimateError(result.accum);
-    // Unbiased where the halves hold equal strata: one range of whole windows from pass 0 (progressive_render.h).
+    // Unbiased where the halves hold equal strata: one range of whole windows from pass 0 (error_tracker.h).
     const bool balanced = estimate.available && h.passes.size() == 1 && h.passes[0].first == 0 &&
                           halvesBalanced(f.fullCycle, h.passes[0]);
 

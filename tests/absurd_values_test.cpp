@@ -22,6 +22,7 @@
 
 #include "flatten/flatten.h"
 #include "fetched_assets.h"
+#include "render/render_plan.h"
 #include "render/strata_plan.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"

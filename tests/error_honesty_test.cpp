@@ -12,6 +12,7 @@
 #include "render/error_probe.h"
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
+#include "render/render_plan.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"
 

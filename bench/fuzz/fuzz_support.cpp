@@ -12,6 +12,7 @@
 #include "flatten/flatten.h"
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
+#include "render/render_plan.h"
 #include "render/strata_plan.h"
 #include "scene/scene.h"
 

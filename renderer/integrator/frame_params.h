@@ -31,7 +31,7 @@ struct FrameParams {
     // one-stratum passes each stands for, so later, larger blocks are not outvoted by early small ones.
     float sampleWeight = 1.0f;
     // Passes alternate between the accumulation's two halves in blocks of this many (0: no second half);
-    // progressive_render.h chooses it so both halves are equally stratified.
+    // error_tracker.h chooses it so both halves are equally stratified.
     uint32_t halfBlock = 0;
     TRAZO_HD bool inSecondHalf(uint32_t pass) const { return halfBlock != 0 && ((pass / halfBlock) & 1u); }
     // Every this many passes (a multiple of every grid's size; 0: never) each grid draws a new visiting order.

@@ -1,5 +1,5 @@
 // The random walk of SPEC §6's subsurface scattering: from where light enters a scattering object to where it
-// leaves. The integrator (render_sample.h) lights the exit point through its own direct-light code.
+// leaves. The thesis integrator (thesis/trace_camera_ray.h) lights the exit point through its own direct-light code.
 #pragma once
 
 #include "core/rng.h"

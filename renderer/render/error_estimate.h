@@ -21,7 +21,7 @@ namespace trazo {
 //     E[(A - B)²] = σ² (1/nA + 1/nB)   ⇒   Var(F) ≈ (nA·nB / n²) (A - B)²,
 // one χ²₁ estimate per pixel-channel, averaged over the image: estimated RMSE = sqrt(mean Var(F)), and
 // relError = estimated RMSE / mean channel value of F. Unbiased when the halves are equally stratified,
-// which renderProgressive guarantees at multiples of 2·cycle passes (progressive_render.h).
+// which the half split gives at multiples of 2·cycle passes (error_tracker.h).
 struct ErrorEstimate {
     bool available = false;   // both halves hold samples in every pixel
     double rmse = NAN;        // estimated RMSE of the image (linear units)
@@ -30,7 +30,7 @@ struct ErrorEstimate {
     uint32_t passes = 0;      // samples per pixel (of the first pixel; all pixels get the same passes)
     uint32_t secondHalfPasses = 0;
     uint32_t probePixels = 0;  // > 0: estimated from an error probe of this many pixels (error_probe.h)
-    bool exact = false;        // 0 by construction: every pass is the same image (strata_plan.h, noSamplingNoise)
+    bool exact = false;        // 0 by construction: every pass is the same image (render_plan.h, noSamplingNoise)
 };
 
 ErrorEstimate estimateError(const std::vector<AccumPixel>& accum);

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "render/progressive_render.h"
+#include "render/error_tracker.h"
 
 namespace trazo {
 

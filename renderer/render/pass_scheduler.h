@@ -1,9 +1,9 @@
 // PassScheduler: the batches of a progressive render, for the headless render (renderProgressive) and the
 // viewer (ViewerSession) alike; what differs between them is the time a batch aims at. The first batch after a
 // restart is one pass (the first image as soon as a pass allows); later ones take as many passes as fit the
-// budget at the last batch's pace. A batch ends early where the error is due to be read, at a pass count where
-// the estimate is unbiased: any count with an error probe, whole windows of 2·cycle passes with the two halves
-// (progressive_render.h). Host code.
+// budget at the last batch's pace. A batch ends early where the error is due to be read (ErrorTracker schedules
+// the readings), at a pass count where the estimate is unbiased: any count with an error probe, whole windows
+// of 2·cycle passes with the two halves (error_tracker.h). Host code.
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,67 @@
 #include "render/render_plan.h"
 
+#include <algorithm>
+#include <cstdio>
+
+#include "core/feature_mask.h"
+#include "integrator/sample_variants.h"
+
 namespace trazo {
+
+namespace {
+
+std::string formatCount(double x) {
+    char text[32];
+    if (x < 1e6) std::snprintf(text, sizeof text, "%.0f", x);
+    else std::snprintf(text, sizeof text, "%.2g", x);
+    return text;
+}
+
+}  // namespace
+
+bool noSamplingNoise(const SceneArrays& a) {
+    return sampleVariantFor(a.settings.integrator, a.features) == 0 &&
+           antialiasingSide(a.settings.antialiasing) == 1 &&
+           a.settings.aperture == 0.0f;
+}
+
+double raysPerPixelPass(const SceneArrays& a, const StrataBlocks& blocks) {
+    auto blockOf = [](uint64_t count, uint32_t target) -> double {
+        return count > UINT32_MAX ? (double)count : (double)blockFor((uint32_t)count, target);
+    };
+    auto lightRays = [&](uint32_t target) {
+        double rays = (double)a.pointLights.size();
+        for (const AreaLightData& l : a.areaLights) rays += blockOf((uint64_t)l.cellsU * l.cellsV, target);
+        return rays;
+    };
+    double perHit = lightRays(blocks.areaLight);
+    const uint64_t qi = a.settings.indirectQuality;
+    if ((a.features & kFeatureIndirect) && qi > 0)
+        perHit += blockOf(2 * qi * qi, blocks.indirect) * (1.0 + lightRays(blocks.lightAtIndirect));
+    double chain = 1.0;
+    if (a.features & (kFeatureReflection | kFeatureGlossy))
+        chain += (double)std::min<uint64_t>(a.settings.reflectionSteps, kMaxReflectionDepth);
+    if (a.features & kFeatureRefraction) chain += (double)kMaxTransmissionSegments;
+    const uint64_t k = antialiasingSide(a.settings.antialiasing);
+    return blockOf(k * k, blocks.antialiasing) * chain * (1.0 + perHit);
+}
+
+std::string longRenderNote(const SceneArrays& a, const StrataBlocks& blocks, uint32_t passes, bool defaultPasses,
+                           uint32_t width, uint32_t height) {
+    const double perPixelPass = raysPerPixelPass(a, blocks);
+    const double rays = perPixelPass * passes * width * height;
+    if (rays < kLongRenderRays) return {};
+    std::string note = "this render will trace up to about " + formatCount(rays) + " rays: " +
+                       std::to_string(passes) + (passes == 1 ? " pass" : " passes");
+    if (defaultPasses) {
+        note += passes >= kMaxCyclePasses ? " (the default: the scene's strata cycle, cut at " +
+                                                std::to_string(kMaxCyclePasses) + " passes)"
+                                          : " (the default: one full cycle of the scene's strata)";
+    }
+    note += " of up to " + formatCount(perPixelPass) + " rays a pixel, " + std::to_string(width) + "×" +
+            std::to_string(height) + " pixels; --spp or --time renders less";
+    return note;
+}
 
 RenderPlan planRender(const RenderRequest& request, const Scene& scene, const SceneArrays& arrays) {
     RenderPlan plan;

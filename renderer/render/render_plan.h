@@ -1,6 +1,7 @@
 // What a headless render will do, decided before anything is allocated from what was asked and the flattened
-// scene: its size and memory, its blocks and passes, how it stops and what it says first. Pure: the CLI
-// (app/headless_render.cpp) carries it out, the tests check it. Host code.
+// scene: its size and memory, its blocks and passes, whether it is noiseless, how it stops and what it says
+// first. The one place a headless render is planned; the strata facts it shares with the viewer are
+// strata_plan.h's. Pure: the CLI (app/headless_render.cpp) carries it out, the tests check it. Host code.
 #pragma once
 
 #include <cstdint>
@@ -51,6 +52,24 @@ struct RenderPlan {
 };
 
 RenderPlan planRender(const RenderRequest& request, const Scene& scene, const SceneArrays& arrays);
+
+// An estimate of the rays one pass traces for a pixel, from above: the pass's antialiasing positions, each a
+// camera ray with its whole reflection chain (ReflectionSteps when the scene reflects) and transmission
+// chain, each point of which takes its block of every light and of the indirect directions (each with its
+// point Q's lights). Mirrors take no shadow rays, so a mirror chain costs less than this says.
+double raysPerPixelPass(const SceneArrays& arrays, const StrataBlocks& blocks);
+
+// What a render of `passes` passes over width × height pixels will trace (raysPerPixelPass), and a line that
+// says so before a long one: empty below kLongRenderRays.
+constexpr double kLongRenderRays = 1e10;  // ~100 s at 100 Mrays/s (a CPU); a minute or so on a GPU
+std::string longRenderNote(const SceneArrays& arrays, const StrataBlocks& blocks, uint32_t passes,
+                           bool defaultPasses, uint32_t width, uint32_t height);
+
+// Whether every pass of every seed renders the same image, so that its error is 0 and needs no estimate: the
+// sample function draws no random number and picks no stratum (render variant 0: point lights only, without
+// reflection, refraction, indirect light or SPEC §6's dispersion and subsurface scattering) at one antialiasing
+// position, the pixel's centre, through a pinhole.
+bool noSamplingNoise(const SceneArrays& arrays);
 
 // Why --target-error cannot work with these limits ("" when it can): no probe, and strata that do not repeat
 // within kMaxCyclePasses.

@@ -1,8 +1,10 @@
-// planRender: what each combination of the CLI's options makes of a render, before anything is allocated.
+// planRender: what each combination of the CLI's options makes of a render, before anything is allocated; and
+// the long-render note it says first.
 #include "render/render_plan.h"
 
 #include <gtest/gtest.h>
 
+#include "core/feature_mask.h"
 #include "flatten/flatten.h"
 #include "scene/scene_reader.h"
 #include "test_paths.h"
@@ -129,6 +131,25 @@ TEST(RenderPlan, OnlyRendersThatDrawNothingAreNoiseless) {
     EXPECT_FALSE(noSamplingNoise(s.flat.arrays));
     s.flat.arrays.settings.aperture = 0.0f;
     EXPECT_TRUE(noSamplingNoise(s.flat.arrays));
+}
+
+TEST(LongRenderNote, OnlyForALongRenderAndSaysItsCost) {
+    SceneArrays a;
+    a.settings = RenderSettings{};
+    a.settings.antialiasing = 1;
+    a.settings.reflectionSteps = 1;
+    a.settings.indirectQuality = 3;
+    a.features = kFeatureIndirect;
+    a.pointLights.push_back(PointLightData{});
+    const StrataBlocks b = StrataBlocks::ones();
+    EXPECT_EQ(raysPerPixelPass(a, b), 1.0 + 1.0 + 1.0 * (1.0 + 1.0));  // camera, shadow, one direction and its Q
+    EXPECT_TRUE(longRenderNote(a, b, 18, true, 512, 512).empty());
+    a.settings.indirectQuality = 724;  // 1048352 directions in one pass
+    const StrataBlocks whole = clampToScene(a, StrataBlocks::whole());
+    const std::string note = longRenderNote(a, whole, 1, true, 512, 512);
+    EXPECT_NE(note.find("1 pass (the default: one full cycle"), std::string::npos) << note;
+    EXPECT_NE(note.find("512×512"), std::string::npos) << note;
+    EXPECT_NE(longRenderNote(a, b, kMaxCyclePasses, true, 4096, 4096).find("cut at 65536"), std::string::npos);
 }
 
 }  // namespace

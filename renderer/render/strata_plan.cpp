@@ -2,14 +2,12 @@
 
 #include <algorithm>
 #include <charconv>
-#include <cstdio>
 #include <initializer_list>
 #include <numeric>
 #include <vector>
 
 #include "core/feature_mask.h"
-#include "integrator/sample_variants.h"
-#include "integrator/sample_variants.h"
+#include "integrator/strata.h"
 
 namespace trazo {
 
@@ -56,11 +54,6 @@ uint32_t fullCyclePasses(const SceneArrays& a, const StrataBlocks& blocks) { ret
 
 uint32_t cameraPathPasses(const SceneArrays& a, const StrataBlocks& blocks) { return cyclePasses(a, blocks, false); }
 
-bool noSamplingNoise(const SceneArrays& a) {
-    return sampleVariantFor(a.settings.integrator, a.features) == 0 && antialiasingSide(a.settings.antialiasing) == 1 &&
-           a.settings.aperture == 0.0f;
-}
-
 // Measured on the seed scenes (time × two-seed variance of `--blocks` choices: bench/peers/blocks_sweep.sh;
 // bench/peers/thesis_table.sh compares the result with the fixed grid on all of them): a grid on the camera path is worth a whole block whenever nothing
 // above it must cycle, because the rays above it are then traced once. Glossy cones cycle one stratum per
@@ -90,13 +83,6 @@ SourceLocation firstGiven(std::initializer_list<const SourceLocation*> places, c
     for (const SourceLocation* at : places)
         if (!at->file.empty()) return *at;
     return SourceLocation{scenePath, 0, 0};
-}
-
-std::string formatCount(double x) {
-    char text[32];
-    if (x < 1e6) std::snprintf(text, sizeof text, "%.0f", x);
-    else std::snprintf(text, sizeof text, "%.2g", x);
-    return text;
 }
 
 }  // namespace
@@ -133,44 +119,6 @@ bool checkRenderBounds(const Scene& scene, Diagnostics& diags) {
         ok = false;
     }
     return ok;
-}
-
-double raysPerPixelPass(const SceneArrays& a, const StrataBlocks& blocks) {
-    auto blockOf = [](uint64_t count, uint32_t target) -> double {
-        return count > UINT32_MAX ? (double)count : (double)blockFor((uint32_t)count, target);
-    };
-    auto lightRays = [&](uint32_t target) {
-        double rays = (double)a.pointLights.size();
-        for (const AreaLightData& l : a.areaLights) rays += blockOf((uint64_t)l.cellsU * l.cellsV, target);
-        return rays;
-    };
-    double perHit = lightRays(blocks.areaLight);
-    const uint64_t qi = a.settings.indirectQuality;
-    if ((a.features & kFeatureIndirect) && qi > 0)
-        perHit += blockOf(2 * qi * qi, blocks.indirect) * (1.0 + lightRays(blocks.lightAtIndirect));
-    double chain = 1.0;
-    if (a.features & (kFeatureReflection | kFeatureGlossy))
-        chain += (double)std::min<uint64_t>(a.settings.reflectionSteps, kMaxReflectionDepth);
-    if (a.features & kFeatureRefraction) chain += (double)kMaxTransmissionSegments;
-    const uint64_t k = antialiasingSide(a.settings.antialiasing);
-    return blockOf(k * k, blocks.antialiasing) * chain * (1.0 + perHit);
-}
-
-std::string longRenderNote(const SceneArrays& a, const StrataBlocks& blocks, uint32_t passes, bool defaultPasses,
-                           uint32_t width, uint32_t height) {
-    const double perPixelPass = raysPerPixelPass(a, blocks);
-    const double rays = perPixelPass * passes * width * height;
-    if (rays < kLongRenderRays) return {};
-    std::string note = "this render will trace up to about " + formatCount(rays) + " rays: " +
-                       std::to_string(passes) + (passes == 1 ? " pass" : " passes");
-    if (defaultPasses) {
-        note += passes >= kMaxCyclePasses ? " (the default: the scene's strata cycle, cut at " +
-                                                std::to_string(kMaxCyclePasses) + " passes)"
-                                          : " (the default: one full cycle of the scene's strata)";
-    }
-    note += " of up to " + formatCount(perPixelPass) + " rays a pixel, " + std::to_string(width) + "×" +
-            std::to_string(height) + " pixels; --spp or --time renders less";
-    return note;
 }
 
 StrataBlocks clampToScene(const SceneArrays& a, const StrataBlocks& b) {

@@ -1,12 +1,10 @@
-// The bounds that keep a render's strata inside 32-bit arithmetic, the kernels' guards against a wrapped grid,
-// blockFor's bounded search, and the long-render note (render/strata_plan.h, integrator/strata.h).
+// The bounds that keep a render's strata inside 32-bit arithmetic, the kernels' guards against a wrapped grid
+// and blockFor's bounded search (render/strata_plan.h, integrator/strata.h).
 #include "render/strata_plan.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
-
-#include "core/feature_mask.h"
 
 namespace trazo {
 namespace {
@@ -88,25 +86,6 @@ TEST(RenderBounds, AcceptUpToTheLimitsAndRefuseBeyondWithTheLine) {
     EXPECT_NE(all.find("t.scene:20:1: error: Subdivision 65536 65536 asks for 4294967296 cells"), std::string::npos)
         << all;
     EXPECT_FALSE(checkRenderBounds(sceneWith(3, 3, 1, 1048577, 1), d));  // a product, not each side
-}
-
-TEST(LongRenderNote, OnlyForALongRenderAndSaysItsCost) {
-    SceneArrays a;
-    a.settings = RenderSettings{};
-    a.settings.antialiasing = 1;
-    a.settings.reflectionSteps = 1;
-    a.settings.indirectQuality = 3;
-    a.features = kFeatureIndirect;
-    a.pointLights.push_back(PointLightData{});
-    const StrataBlocks b = StrataBlocks::ones();
-    EXPECT_EQ(raysPerPixelPass(a, b), 1.0 + 1.0 + 1.0 * (1.0 + 1.0));  // camera, shadow, one direction and its Q
-    EXPECT_TRUE(longRenderNote(a, b, 18, true, 512, 512).empty());
-    a.settings.indirectQuality = 724;  // 1048352 directions in one pass
-    const StrataBlocks whole = clampToScene(a, StrataBlocks::whole());
-    const std::string note = longRenderNote(a, whole, 1, true, 512, 512);
-    EXPECT_NE(note.find("1 pass (the default: one full cycle"), std::string::npos) << note;
-    EXPECT_NE(note.find("512×512"), std::string::npos) << note;
-    EXPECT_NE(longRenderNote(a, b, kMaxCyclePasses, true, 4096, 4096).find("cut at 65536"), std::string::npos);
 }
 
 }  // namespace

@@ -25,17 +25,13 @@ void ProgressiveAccumulation::restart(Backend& backend, const Scene& scene, cons
     cyclePasses_ = fullCyclePasses(arrays, StrataBlocks::ones());
     segment_ = 0;
     startSegment(firstBlocks_);
-    batches_.restart(segmentCycle_);
-    batches_.estimateSoon();  // the first reading as soon as one is unbiased
+    tracker_.restart(frame_, segmentCycle_, 0, batches_);
     passes_ = 0;
     samples_ = 0.0;
     rays_ = 0;
     renderSeconds_ = 0.0;
     ++generation_;
     convergence_.clear();
-    estimate_ = ErrorEstimate{};
-    lastEstimateSeconds_ = 0.0;
-    targetReached_ = false;
 }
 
 void ProgressiveAccumulation::setBlocks(const StrataBlocks& first, double growthPassSeconds) {
@@ -43,10 +39,7 @@ void ProgressiveAccumulation::setBlocks(const StrataBlocks& first, double growth
     growthPassSeconds_ = growthPassSeconds;
 }
 
-void ProgressiveAccumulation::setTargetError(double target) {
-    targetError_ = std::max(target, 0.0);
-    targetReached_ = targetError_ > 0.0 && estimate_.available && estimate_.relError <= targetError_;
-}
+void ProgressiveAccumulation::setTargetError(double target) { tracker_.setTarget(target); }
 
 void ProgressiveAccumulation::startSegment(const StrataBlocks& blocks) {
     const uint32_t seed = segment_ == 0 ? seed_ : hashCombine(seed_, segment_);
@@ -59,7 +52,7 @@ void ProgressiveAccumulation::startSegment(const StrataBlocks& blocks) {
 
 void ProgressiveAccumulation::start(Backend& backend, uint32_t count) {
     waitIdle(backend);
-    if (targetReached_) return;
+    if (tracker_.targetReached()) return;
     count = std::min(count, kMaxProgressivePasses - passes_);
     // With growth on, batches end at the segment's cycle boundaries, where growBlocks may start a new one.
     if (growthPassSeconds_ > 0.0) count = std::min(count, segmentCycle_ - batches_.passes() % segmentCycle_);
@@ -88,13 +81,15 @@ bool ProgressiveAccumulation::busy(Backend& backend) {
     worker_.join();
     const double seconds = batch_.get();  // rethrows the batch's exception
     passes_ += batchPasses_;
+    tracker_.rendered(backend, batchPasses_, batches_);
     batches_.finished(batchPasses_, seconds);
     samples_ += double(batchPasses_) * frame_.sampleWeight;
     renderSeconds_ += seconds;
     secondsPerPixelPass_ = batches_.secondsPerPass() / (double(width_) * height_);
     rays_ = backend.raysTraced();
     ++generation_;
-    estimateAfterBatch(backend);
+    if (tracker_.estimateIfDue(backend, batches_, renderSeconds_))
+        convergence_.push_back({renderSeconds_, tracker_.estimate().relError, passes_});
     growBlocks();
     return false;
 }
@@ -102,21 +97,6 @@ bool ProgressiveAccumulation::busy(Backend& backend) {
 void ProgressiveAccumulation::waitIdle(Backend& backend) {
     if (batch_.valid()) batch_.wait();
     busy(backend);
-}
-
-void ProgressiveAccumulation::estimateAfterBatch(Backend& backend) {
-    if (!batches_.estimateScheduled() && renderSeconds_ - lastEstimateSeconds_ >= kEstimateInterval)
-        batches_.estimateSoon();
-    if (!batches_.estimateDue()) return;
-    batches_.estimateDone();
-    lastEstimateSeconds_ = renderSeconds_;
-    std::vector<AccumPixel> accum;
-    backend.readAccumulation(accum);
-    const ErrorEstimate e = estimateError(accum);
-    if (!e.available) return;
-    estimate_ = e;
-    convergence_.push_back({renderSeconds_, e.relError, passes_});
-    if (targetError_ > 0.0 && e.relError <= targetError_) targetReached_ = true;
 }
 
 void ProgressiveAccumulation::growBlocks() {

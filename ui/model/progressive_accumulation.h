@@ -9,11 +9,12 @@
 // passes each stands for (FrameParams::sampleWeight). Every segment is whole cycles, an exact stratified
 // estimate.
 //
-// Convergence: at the end of a batch whose passes complete an even number of cycles of the current segment
-// (where the two halves are equally stratified, progressive_render.h), at most every kEstimateInterval seconds
-// of rendering, the error is estimated from the halves (estimateError) and added to the series; batches are
-// cut at those points when an estimate is due. While blocks grow, segments are single cycles and nothing is
-// estimated; after growth the earlier segments make the estimate approximate.
+// Convergence: the headless render's ErrorTracker, on a display cadence: at the end of a batch whose passes
+// complete an even number of cycles of the current segment (where the two halves are equally stratified,
+// error_tracker.h), at most every kEstimateInterval seconds of rendering, the error is estimated from the
+// halves and added to the series; batches are cut at those points when an estimate is due. While blocks grow,
+// segments are single cycles and nothing is estimated; after growth the earlier segments make the estimate
+// approximate.
 #pragma once
 
 #include <functional>
@@ -23,6 +24,7 @@
 
 #include "backends/backend.h"
 #include "render/error_estimate.h"
+#include "render/error_tracker.h"
 #include "render/pass_scheduler.h"
 #include "scene/scene.h"
 
@@ -71,13 +73,12 @@ public:
     double secondsPerPixelPass() const { return secondsPerPixelPass_; }  // kept across restarts; 0 before a batch
     uint64_t generation() const { return generation_; }  // changes whenever the accumulation does
     const std::vector<ConvergencePoint>& convergence() const { return convergence_; }
-    const ErrorEstimate& errorEstimate() const { return estimate_; }
-    double targetError() const { return targetError_; }
-    bool targetReached() const { return targetReached_; }
+    const ErrorEstimate& errorEstimate() const { return tracker_.estimate(); }
+    double targetError() const { return tracker_.targetError(); }
+    bool targetReached() const { return tracker_.targetReached(); }
 
 private:
     void startSegment(const StrataBlocks& blocks);  // frame_ for a new segment from the current pass on
-    void estimateAfterBatch(Backend& backend);      // a convergence point when due
     void growBlocks();                              // a larger segment when it pays
 
     const SceneArrays* arrays_ = nullptr;
@@ -104,10 +105,7 @@ private:
     uint64_t generation_ = 0;
 
     std::vector<ConvergencePoint> convergence_;
-    ErrorEstimate estimate_;
-    double lastEstimateSeconds_ = 0.0;  // renderSeconds_ at the last try
-    double targetError_ = 0.0;
-    bool targetReached_ = false;
+    ErrorTracker tracker_{ErrorTracking{.displayInterval = kEstimateInterval}};  // from the halves
 };
 
 }  // namespace trazo
