@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/vec3.h"
-#include "integrator/scattering.h"
+#include "shading/scattering.h"
 
 namespace trazo {
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/host_simd.h"
-#include "integrator/scattering.h"
+#include "shading/scattering.h"
 #include "integrator/surface.h"
 #include "integrator/thesis/direct_light.h"
 #if TRAZO_HOST_PACKETS

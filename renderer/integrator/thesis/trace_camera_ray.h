@@ -5,7 +5,7 @@
 // all-features instance is the oracle every variant must match.
 #pragma once
 
-#include "integrator/scattering.h"
+#include "shading/scattering.h"
 #include "integrator/subsurface.h"
 #include "integrator/surface.h"
 #include "integrator/thesis/direct_light.h"

@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "integrator/scattering.h"
+#include "shading/scattering.h"
 
 namespace trazo {
 namespace {
