@@ -95,6 +95,83 @@ TRAZO_HD bool leaveSolid(Vec3 d, Vec3 nInside, Vec3 ngOutward, const MaterialDat
                               out);
 }
 
+// SPEC §6 dispersion: a ray that carries one channel (its weight is 0 in the others) refracts with that
+// channel's index; at a dispersing surface a ray of several channels first picks one to carry on (the three in
+// turn over three passes), for itself and every ray it sends on.
+TRAZO_HD_HOT void disperse(MaterialData& m, Vec3& weight, const StrataKey& strata) {
+    if (!(m.dispersion > 0.0f)) return;
+    int channel = soleChannel(weight);
+    if (channel < 0 && m.opacity < 1.0f) {
+        channel = int(strata.stratum(kGridDispersionChannel, 3u));
+        weight = heroChannelWeight(weight, uint32_t(channel));
+    }
+    if (channel >= 0) m.refractionIndex = dispersedIndex(m.refractionIndex, m.dispersion, channel);
+}
+
+// Where a subsurface walk left the object: §6 lights it as a white Lambertian surface (Oren–Nayar with σ = 0 is
+// exactly N·L), its normal map included; nothing else.
+TRAZO_HD_HOT void becomeWalkExit(MaterialData& m) {
+    m.diffuse = Vec3(1.0f);
+    m.specular = m.emissive = m.scatteringDistance = Vec3(0.0f);
+    m.roughness = 0.0f;
+    m.opacity = 1.0f;
+    m.fresnel = 0u;
+}
+
+// Pushes the rays the point sends on, reflected and transmitted (entering the solid), and returns the share a
+// of reflection, which the point's own shading leaves to the reflected ray. SPEC §6 Fresnel: the reflectance F
+// of the interface scales the reflection (a = ReflectionAmount·F) and splits the transmitted part T into
+// (1 − F)·T and F·R′, R′ the reflection without its Ks tint, traced as one ray with R (the same cone and strata).
+template <FeatureMask F, class Push>
+TRAZO_HD_HOT float pushReflectedAndTransmitted(const ShadingPoint& sp, Vec3 p, float offset, const PendingRay& r, Vec3 d, Vec3 weight,
+                                               const MaterialData& m, const RenderSettings& settings,
+                                               const StrataKey& strata, SampleStream& rng, Push& push) {
+    constexpr bool kRefraction = (F & kFeatureRefraction) != 0;
+    constexpr bool kReflection = (F & kFeatureReflection) != 0;
+    const bool fresnel = m.fresnel != 0u;
+    const float f = fresnel ? dielectricFresnel(dot(d, sp.n), 1.0f, m.refractionIndex) : 0.0f;
+    const float a = kReflection && materialReflects(m, settings, r.reflectionDepth)
+                        ? m.reflectionAmount * (fresnel ? f : 1.0f)
+                        : 0.0f;
+    const bool reflectsTransmitted = kReflection && kRefraction && f > 0.0f &&
+                                     materialReflectsTransmitted(m, settings) &&
+                                     belowReflectionLimit(settings, r.reflectionDepth);
+    if (kReflection && (a > 0.0f || reflectsTransmitted)) {
+        const Vec3 dir = sampleReflection(sp, d, m, settings.reflectionQuality, strata, rng);
+        if (dot(dir, sp.ng) > 0.0f) {  // directions below the geometric surface contribute 0
+            Vec3 reflected = weight * m.specular * (a * m.opacity);
+            if (reflectsTransmitted) reflected += weight * (f * (1.0f - m.opacity));
+            push(PendingRay{Ray{offsetRayOrigin(p, offset, sp.ng, dir), dir}, reflected,
+                            r.reflectionDepth + 1u, 0u, hashCombine(r.node, kBranchReflected)});
+        }
+    }
+    if (kRefraction && m.opacity < 1.0f && r.segments < kMaxTransmissionSegments && f < 1.0f) {
+        // Entering: η = 1/n; total internal reflection is possible only when n < 1.
+        Vec3 dir;
+        if (sampleTransmission(d, sp.n, sp.ng, 1.0f / m.refractionIndex, m.refractionHalfAngle,
+                               settings.reflectionQuality, strata, rng, dir)) {
+            const Vec3 transmitted =
+                fresnel ? weight * ((1.0f - m.opacity) * (1.0f - f)) : weight * (1.0f - m.opacity);
+            push(PendingRay{Ray{offsetRayOrigin(p, offset, sp.ng, dir), dir}, transmitted, r.reflectionDepth,
+                            r.segments + 1u, hashCombine(r.node, kBranchRefractedIn)});
+        }
+    }
+    return a;
+}
+
+// Direct(P) + Indirect(P) at the point, before the weight of its directly lit share. m.diffuse is 0 for a
+// scattering material, whose walk takes that light; Indirect(P) uses its own diffuse colour kd, restored here.
+template <FeatureMask F>
+TRAZO_HD_HOT Vec3 litByLights(const SceneView& scene, const ShadingPoint& sp, bool walkExit, Vec3 kd, MaterialData& m,
+                              const StrataKey& strata, const StrataBlocks& blocks, SampleStream& rng, uint32_t& rays) {
+    Vec3 local = directLight<F>(scene, sp, m, strata, blocks.areaLight, 0u, rng, rays);
+    m.diffuse = kd;
+    if constexpr ((F & kFeatureIndirect) != 0) {
+        if (!walkExit) local += indirectLight<F>(scene, sp, m, strata, blocks, rng, rays);
+    }
+    return local;
+}
+
 // Color(0) along a camera ray: the whole tree of reflected and transmitted rays, as an explicit stack.
 // `given`: the camera ray's intersectScene answer, or null (host x86 only: the device never passes one).
 template <FeatureMask F>
@@ -141,22 +218,8 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         MaterialData m = scene.materials[object.material];
         const StrataKey strata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass, r.node};
         constexpr bool kRefraction = (F & kFeatureRefraction) != 0;
-        constexpr bool kReflection = (F & kFeatureReflection) != 0;
-        constexpr bool kIndirect = (F & kFeatureIndirect) != 0;
         Vec3 weight = r.weight;
-        if constexpr ((F & kFeatureDispersion) != 0) {
-            // SPEC §6 dispersion: a ray that carries one channel (its weight is 0 in the others) refracts with
-            // that channel's index; at a dispersing surface a ray of several channels first picks one to carry
-            // on (the three in turn over three passes), for itself and every ray it sends on.
-            if (m.dispersion > 0.0f) {
-                int channel = soleChannel(weight);
-                if (channel < 0 && m.opacity < 1.0f) {
-                    channel = int(strata.stratum(kGridDispersionChannel, 3u));
-                    weight = heroChannelWeight(weight, uint32_t(channel));
-                }
-                if (channel >= 0) m.refractionIndex = dispersedIndex(m.refractionIndex, m.dispersion, channel);
-            }
-        }
+        if constexpr ((F & kFeatureDispersion) != 0) disperse(m, weight, strata);
         const Vec3 d = r.ray.direction;
         const HitPoint at = hitPointOn(scene, object, r.ray, hit);
         const Vec3 p = at.p;
@@ -164,15 +227,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         SurfacePoint surface = surfaceAt(scene, object, hit, p, materialHasTextures(m));
         applyTextures(scene, m, surface);
         const bool frontFacing = dot(d, surface.ng) < 0.0f;
-        if (walkExit) {
-            // Where a subsurface walk left the object: §6 lights it as a white Lambertian surface (Oren–Nayar
-            // with σ = 0 is exactly N·L), its normal map included; nothing else.
-            m.diffuse = Vec3(1.0f);
-            m.specular = m.emissive = m.scatteringDistance = Vec3(0.0f);
-            m.roughness = 0.0f;
-            m.opacity = 1.0f;
-            m.fresnel = 0u;
-        }
+        if (walkExit) becomeWalkExit(m);
 
         if (kRefraction && !frontFacing && m.opacity < 1.0f) {
             // Leaving a transparent solid: refract out or reflect internally; nothing is shaded.
@@ -190,44 +245,15 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         // The reflected and transmitted rays go on the stack before this point is shaded, so that nothing but
         // the colour's weight stays live across the shadow and indirect rays (on a GPU, registers decide how
         // many threads run at once).
-        // SPEC §6 Fresnel: the reflectance F of the interface scales the reflection (a = ReflectionAmount·F) and
-        // splits the transmitted part T into (1 − F)·T and F·R′, R′ the reflection without its Ks tint, traced
-        // as one ray with R (the same cone and strata).
-        const bool fresnel = m.fresnel != 0u;
-        const float f = fresnel ? dielectricFresnel(dot(d, sp.n), 1.0f, m.refractionIndex) : 0.0f;
-        const float a = kReflection && materialReflects(m, settings, r.reflectionDepth)
-                            ? m.reflectionAmount * (fresnel ? f : 1.0f)
-                            : 0.0f;
-        const bool reflectsTransmitted =
-            kReflection && kRefraction && f > 0.0f && materialReflectsTransmitted(m, settings) &&
-            belowReflectionLimit(settings, r.reflectionDepth);
-        if (kReflection && (a > 0.0f || reflectsTransmitted)) {
-            const Vec3 dir = sampleReflection(sp, d, m, settings.reflectionQuality, strata, rng);
-            if (dot(dir, sp.ng) > 0.0f) {  // directions below the geometric surface contribute 0
-                Vec3 reflected = weight * m.specular * (a * m.opacity);
-                if (reflectsTransmitted) reflected += weight * (f * (1.0f - m.opacity));
-                push(PendingRay{Ray{offsetRayOrigin(p, offset, sp.ng, dir), dir}, reflected, r.reflectionDepth + 1u, 0u,
-                                hashCombine(r.node, kBranchReflected)});
-            }
-        }
-        if (kRefraction && m.opacity < 1.0f && r.segments < kMaxTransmissionSegments && f < 1.0f) {
-            // Entering: η = 1/n; total internal reflection is possible only when n < 1.
-            Vec3 dir;
-            if (sampleTransmission(d, sp.n, sp.ng, 1.0f / m.refractionIndex, m.refractionHalfAngle,
-                                   settings.reflectionQuality, strata, rng, dir)) {
-                const Vec3 transmitted =
-                    fresnel ? weight * ((1.0f - m.opacity) * (1.0f - f)) : weight * (1.0f - m.opacity);
-                push(PendingRay{Ray{offsetRayOrigin(p, offset, sp.ng, dir), dir}, transmitted, r.reflectionDepth,
-                                r.segments + 1u, hashCombine(r.node, kBranchRefractedIn)});
-            }
-        }
+        const float a = pushReflectedAndTransmitted<F>(sp, p, offset, r, d, weight, m, settings, strata, rng, push);
         color += weight * m.emissive;
         const float directWeight = (1.0f - a) * m.opacity;  // 0 for pure mirrors and clear glass: no shadow rays
-        if (directWeight > 0.0f) {
-            // SPEC §6 subsurface scattering: Direct(P) is the Ks·CT part of Shade at P plus S(P), the Direct of
-            // the point where P's walk leaves the object, which the walk's last segment, pushed, evaluates.
+        if (directWeight > 0.0f)
+        {
+            // SPEC §6 subsurface scattering: Direct(P) is the Ks·CT part of Shade at P plus S(P), the Direct of the
+            // point where P's walk leaves the object, which the walk's last segment, pushed, evaluates.
             const Vec3 kd = m.diffuse;
-            if (kSubsurface && materialScatters(m)) {
+            if ((F & kFeatureSubsurface) != 0 && materialScatters(m)) {
                 Ray last;
                 Vec3 walkWeight;
                 if (subsurfaceWalk(scene, object, sp, m, rng, rays, last, walkWeight)) {
@@ -236,12 +262,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
                 }
                 m.diffuse = Vec3(0.0f);
             }
-            Vec3 local = directLight<F>(scene, sp, m, strata, blocks.areaLight, 0u, rng, rays);
-            m.diffuse = kd;
-            if constexpr (kIndirect) {
-                if (!walkExit) local += indirectLight<F>(scene, sp, m, strata, blocks, rng, rays);
-            }
-            color += weight * (local * directWeight);
+            color += weight * (litByLights<F>(scene, sp, walkExit, kd, m, strata, blocks, rng, rays) * directWeight);
         }
     }
     return color;
