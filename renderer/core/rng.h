@@ -9,7 +9,7 @@
 namespace trazo {
 
 // A 32-bit integer hash with good avalanche (Wellons' "lowbias32" triple32 variant). A template over the
-// unsigned type so that the host's SIMD lanes (integrator/packet_lanes.h) draw the same numbers from one source.
+// unsigned type so that the host's SIMD lanes (integrator/packets/packet_lanes.h) draw the same numbers from one source.
 template <typename U>
 TRAZO_HD U hashBits(U x) {
     x ^= x >> 17;

@@ -1,5 +1,5 @@
 // sin and cos of one angle at once (host and device), written once as a template over the number type so that
-// the host's SIMD lanes (integrator/packet_lanes.h, LaneTrig) compute the same bits as the scalar code: libm's
+// the host's SIMD lanes (integrator/packets/packet_lanes.h, LaneTrig) compute the same bits as the scalar code: libm's
 // sinf/cosf cannot be reproduced in lanes (glibc picks its variant at run time), and a call per direction is
 // 8–9 % of a render with indirect light.
 #pragma once

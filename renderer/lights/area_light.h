@@ -65,6 +65,13 @@ TRAZO_HD float pdfLi(const AreaLightData& light, Vec3 p, Vec3 wi) {
     return areaLightPdf(light, wi, hit.t);
 }
 
+// The radiance arriving at p from direction wi: Color where the ray p + t·wi meets the rectangle's front.
+TRAZO_HD Vec3 arrivingLi(const AreaLightData& light, Vec3 p, Vec3 wi) {
+    ShapeHit hit;
+    if (!intersectRectangle(light.rect, Ray{p, wi}, 0.0f, INFINITY, hit)) return Vec3(0.0f);
+    return areaLightRadiance(light, -wi);
+}
+
 inline Aabb lightBounds(const AreaLightData& light) {
     Aabb b;
     const RectangleShape& r = light.rect;

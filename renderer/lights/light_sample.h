@@ -1,6 +1,7 @@
 // What next-event estimation asks of a light (SPEC §7's reading of the light: radiance, or for a point light
 // radiant intensity with inverse-square falloff): sampleLi draws a direction towards the light from a point,
-// pdfLi gives the density with which sampleLi would have drawn a direction, for multiple importance sampling.
+// pdfLi gives the density with which sampleLi would have drawn a direction, and arrivingLi the radiance a
+// direction found by other means (a BSDF sample) receives from the light, for multiple importance sampling.
 #pragma once
 
 #include "core/hd.h"

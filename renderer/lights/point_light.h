@@ -22,8 +22,9 @@ TRAZO_HD LightSample sampleLi(const PointLightData& light, Vec3 p, float u1, flo
     return LightSample{toLight / distance, light.color / distance2, 1.0f, distance, true};
 }
 
-// No direction drawn from a BSDF finds a point.
+// No direction drawn from a BSDF finds a point: no density, no radiance.
 TRAZO_HD float pdfLi(const PointLightData&, Vec3, Vec3) { return 0.0f; }
+TRAZO_HD Vec3 arrivingLi(const PointLightData&, Vec3, Vec3) { return Vec3(0.0f); }
 
 inline Aabb lightBounds(const PointLightData& light) { return Aabb{light.position, light.position}; }
 

@@ -1,5 +1,5 @@
 // visitLight: the one dispatch over light kinds (host and device). It calls f with the light's data; overloads of
-// each kind's interface (lights/<kind>.h: sampleLi, pdfLi, lightBounds) do the rest. Templated on the scene
+// each kind's interface (lights/<kind>.h: sampleLi, pdfLi, arrivingLi, lightBounds) do the rest. Templated on the scene
 // (SceneView, objects/, stands above lights/).
 #pragma once
 
@@ -32,6 +32,11 @@ TRAZO_HD LightSample sampleLi(const Scene& scene, LightRef light, Vec3 p, float 
 template <class Scene>
 TRAZO_HD float pdfLi(const Scene& scene, LightRef light, Vec3 p, Vec3 wi) {
     return visitLight(scene, light, [&](const auto& data) { return pdfLi(data, p, wi); });
+}
+
+template <class Scene>
+TRAZO_HD Vec3 arrivingLi(const Scene& scene, LightRef light, Vec3 p, Vec3 wi) {
+    return visitLight(scene, light, [&](const auto& data) { return arrivingLi(data, p, wi); });
 }
 
 }  // namespace trazo

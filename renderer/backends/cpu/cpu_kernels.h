@@ -14,7 +14,7 @@
 
 namespace trazo {
 
-struct RayPacket;  // integrator/packet_lanes.h
+struct RayPacket;  // integrator/packets/packet_lanes.h
 struct TracedRay;  // integrator/scene_intersect.h
 
 enum class CpuIsa : uint32_t { Sse2, Avx2, Avx512 };
@@ -35,7 +35,7 @@ using TileRenderFn = uint64_t (*)(const SceneView& scene, const FrameParams& fra
 struct CameraPacketKernels {
     bool available;  // false in the device-paths build, which has no packets
     std::array<TileRenderFn, kSampleVariantCount> renderTile;  // by sampleVariantFor(features); null: not for it
-    // tracePacket (integrator/nearest_packet.h) at this ISA's width.
+    // tracePacket (integrator/packets/nearest_packet.h) at this ISA's width.
     void (*tracePacket)(const SceneView& scene, Vec3 origin, RayPacket& rays, uint64_t active, TracedRay* out);
 };
 const CameraPacketKernels& cameraPacketKernelsSse2();
@@ -56,7 +56,7 @@ struct CpuKernels {
     // out[i] = answerRayQuery(scene, queries[i], kind) for i < count.
     void (*answerRayQueries)(const SceneView& scene, const RayQuery* queries, size_t count, RayQueryKind kind,
                              RayAnswer* out);
-    // occludedPacket (integrator/occluded_packet.h) at this ISA's width; null in the device-paths build.
+    // occludedPacket (integrator/packets/occluded_packet.h) at this ISA's width; null in the device-paths build.
     uint64_t (*occludedPacket)(const SceneView& scene, Vec3 origin, const RayPacket& rays, uint64_t active);
     // The camera-packet kernels of this ISA.
     const CameraPacketKernels& (*cameraPackets)();

@@ -4,7 +4,7 @@
 //
 // The host half: the struct the reader fills (`position`, `where`), appendLight (flatten()), and the editor's
 // operations: hostBounds, translate, newObject, scaleAboutOrigin. The kernel half (lights/<kind>.h): sampleLi,
-// pdfLi and lightBounds over its data.
+// pdfLi, arrivingLi and lightBounds over its data.
 #pragma once
 
 #include <concepts>
@@ -31,6 +31,7 @@ template <class Data>
 concept KernelLightKind = requires(const Data& light, Vec3 p, float u) {
     { sampleLi(light, p, u, u) } -> std::same_as<LightSample>;
     { pdfLi(light, p, p) } -> std::same_as<float>;
+    { arrivingLi(light, p, p) } -> std::same_as<Vec3>;
     { lightBounds(light) } -> std::same_as<Aabb>;
 };
 
