@@ -2,8 +2,6 @@
 // near its target, the CLI reports the estimate, and the benchmark's log–log slope is about −1/2.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -12,21 +10,15 @@
 #include "scene/scene_reader.h"
 #include "support/convergence_series.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo::test {
 namespace {
 
 using namespace trazo::convergence;
 
-// A sphere over a floor under a 4×4 area light (cycle 16): a penumbra, so the image is noisy.
-const char* kPenumbraScene =
-    "SceneSettings\n{\n    RenderWidth 40\n    RenderHeight 30\n    IndirectQuality 0\n}\n"
-    "Camera\n{\n    POV 0 3 8\n    POI 0 1 0\n    FOV 45\n}\n"
-    "Material\n{\n    Name white\n    DiffuseColor 0.8 0.8 0.8\n}\n"
-    "Box\n{\n    Material white\n    Scale 8 0.2 8\n    Translation 0 -0.1 0\n}\n"
-    "Sphere\n{\n    Material white\n    Center 0 1 0\n    Radius 1\n}\n"
-    "AreaLight\n{\n    Position 0.5 4 0\n    Direction 0 -1 0\n    Width 3\n    Height 3\n    Subdivision 4 4\n"
-    "    Color 1 1 1\n}\n";
+const std::string kPenumbraScene =
+    penumbraSceneText("    RenderWidth 40\n    RenderHeight 30\n    IndirectQuality 0\n");
 
 class Convergence : public ::testing::Test {
 protected:
@@ -113,11 +105,11 @@ TEST_F(Convergence, TargetErrorStopsNearTheTarget) {
     }
 }
 
-int runTrazo(const std::string& arguments, std::string& errors) {
-    const std::string errFile = tempPath("convergence_stderr.txt");
-    const int raw = std::system((trazoBinary() + " " + arguments + " 2>" + errFile + " >/dev/null").c_str());
-    errors = readFileText(errFile);
-    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+// The CLI's exit status, its stderr in `errors`.
+int trazoStatus(const std::string& arguments, std::string& errors) {
+    CommandResult r = runTrazo(arguments);
+    errors = std::move(r.errors);
+    return r.status;
 }
 
 double jsonNumber(const std::string& json, const std::string& key) {
@@ -131,7 +123,7 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
     std::ofstream(scene) << kPenumbraScene;
     const std::string out = tempPath("cli_penumbra.png"), stats = tempPath("cli_penumbra.json");
     std::string errors;
-    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --spp 64 --stats " + stats, errors), 0) << errors;
+    ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --spp 64 --stats " + stats, errors), 0) << errors;
     std::string json = readFileText(stats);
     const double estimate = jsonNumber(json, "estimated_rel_error");
     EXPECT_GT(estimate, 0.001) << json;
@@ -141,7 +133,7 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
 
     // One stratum per pass (a 16-pass cycle), and the default blocks (the whole light per pass: a 1-pass cycle).
     for (const char* blocks : {"--blocks 1", ""}) {
-        ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --target-error 0.03 --quiet --stats " + stats +
+        ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --target-error 0.03 --quiet --stats " + stats +
                                " " + blocks,
                            errors),
                   0)
@@ -158,7 +150,7 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
     }
 
     // One pass states its error too (the error probe), and a loose target is met by the first pass.
-    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --spp 1 --fixed-grid --quiet --stats " + stats, errors),
+    ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --spp 1 --fixed-grid --quiet --stats " + stats, errors),
               0)
         << errors;
     json = readFileText(stats);
@@ -166,7 +158,7 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
     EXPECT_LT(jsonNumber(json, "estimated_rel_error"), 0.2) << json;
     EXPECT_NE(json.find("\"estimate_balanced\": true"), std::string::npos) << json;
     EXPECT_NE(json.find("\"fixed_grid\": true"), std::string::npos) << json;
-    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --target-error 0.5 --quiet --stats " + stats, errors),
+    ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --target-error 0.5 --quiet --stats " + stats, errors),
               0)
         << errors;
     json = readFileText(stats);
@@ -180,7 +172,7 @@ TEST(ConvergenceCli, ANoiselessRenderStatesZeroWithoutAProbe) {
     const std::string scene = sourcePath("scenes/scene1_point.scene");
     const std::string out = tempPath("cli_point.png"), stats = tempPath("cli_point.json");
     std::string errors;
-    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --width 64 --height 48 --stats " + stats, errors), 0)
+    ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --width 64 --height 48 --stats " + stats, errors), 0)
         << errors;
     std::string json = readFileText(stats);
     EXPECT_EQ(jsonNumber(json, "estimated_rel_error"), 0.0) << json;
@@ -188,7 +180,7 @@ TEST(ConvergenceCli, ANoiselessRenderStatesZeroWithoutAProbe) {
     EXPECT_NE(json.find("\"no_sampling_noise\": true"), std::string::npos) << json;
     EXPECT_NE(json.find("\"estimate_balanced\": true"), std::string::npos) << json;
     EXPECT_NE(errors.find("relative error 0 (no sampling noise"), std::string::npos) << errors;
-    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --width 64 --height 48 --target-error 0.0001 --quiet "
+    ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --width 64 --height 48 --target-error 0.0001 --quiet "
                            "--stats " + stats,
                        errors),
               0)
@@ -197,7 +189,7 @@ TEST(ConvergenceCli, ANoiselessRenderStatesZeroWithoutAProbe) {
     EXPECT_NE(json.find("\"reached_target\": true"), std::string::npos) << json;
     EXPECT_EQ(jsonNumber(json, "spp"), 1.0) << json;
     // A scene with noise keeps its probe.
-    ASSERT_EQ(runTrazo("--render " + sourcePath("scenes/scene1_area.scene") + " -o " + out +
+    ASSERT_EQ(trazoStatus("--render " + sourcePath("scenes/scene1_area.scene") + " -o " + out +
                            " --width 64 --height 48 --quiet --stats " + stats,
                        errors),
               0)

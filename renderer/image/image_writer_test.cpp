@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <sstream>
 
 #include "test_paths.h"
 
@@ -374,12 +373,7 @@ TEST(ImageWriterFailure, ExistingFileIsReplacedOnlyOnSuccess) {
     const fs::path dir = freshDir("replace");
     const fs::path path = dir / "out.png";
     { std::ofstream(path) << "old contents"; }
-    auto contents = [&] {
-        std::ifstream in(path, std::ios::binary);
-        std::stringstream s;
-        s << in.rdbuf();
-        return s.str();
-    };
+    auto contents = [&] { return test::readFileText(path.string()); };
 
     std::string error;
     EXPECT_FALSE(writeImage(path.string(), 2, 2, std::vector<Vec3>(3), error));

@@ -6,24 +6,18 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <regex>
 #include <set>
 #include <sstream>
+
+#include "test_paths.h"
 
 namespace trazo {
 namespace {
 
 const std::string kDocsSpec = TRAZO_SOURCE_DIR "/docs/SPEC.md";
 const std::string kSharedSpec = TRAZO_SOURCE_DIR "/../shared/SPEC.md";
-
-std::string readAll(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 // From `start` to `end`, or to the end of the text when no `end` follows (the last section).
 std::string section(const std::string& spec, const std::string& start, const std::string& end) {
@@ -114,7 +108,7 @@ std::vector<float> numbers(const std::string& s) {
 }
 
 void expectTablesMatch(const std::string& specPath) {
-    const std::string spec = readAll(specPath);
+    const std::string spec = test::readFileText(specPath);
     ASSERT_FALSE(spec.empty()) << specPath;
     auto blocks = specBlocks(section(spec, "## 3. Blocks", "## 4."));
     ASSERT_EQ(blocks.size(), sceneBlocks().size()) << "SPEC §3 and the table list different blocks";
@@ -171,12 +165,12 @@ TEST(BlockTable, MatchesTheSpecCopyInDocs) { expectTablesMatch(kDocsSpec); }
 // the spec it is copied from.
 TEST(BlockTable, DocsCopyOfTheSpecIsCurrent) {
     if (!std::filesystem::exists(kSharedSpec)) GTEST_SKIP() << kSharedSpec << " is absent (a fresh clone)";
-    EXPECT_EQ(readAll(kDocsSpec), readAll(kSharedSpec)) << "copy ../shared/SPEC.md to docs/SPEC.md";
+    EXPECT_EQ(test::readFileText(kDocsSpec), test::readFileText(kSharedSpec)) << "copy ../shared/SPEC.md to docs/SPEC.md";
 }
 
 TEST(BlockTable, SpecParserReadsTheExpectedShapes) {
     // Guards the test's own parser: a few facts read by eye from SPEC §3.
-    const auto blocks = specBlocks(section(readAll(kDocsSpec), "## 3. Blocks", "## 4."));
+    const auto blocks = specBlocks(section(test::readFileText(kDocsSpec), "## 3. Blocks", "## 4."));
     ASSERT_TRUE(blocks.count("AreaLight"));
     ASSERT_EQ(blocks.at("AreaLight").size(), 7u);
     EXPECT_EQ(blocks.at("AreaLight").back().name, "Subdivision");
@@ -184,7 +178,7 @@ TEST(BlockTable, SpecParserReadsTheExpectedShapes) {
     EXPECT_EQ(blocks.at("Texture").at(0).defaultText, "—");
     EXPECT_EQ(blocks.at("Mesh").size(), 5u);
     EXPECT_EQ(blocks.at("Material").size(), 13u);
-    const auto added = specFutureWork(section(readAll(kDocsSpec), "## 6.", "\n## 7."));
+    const auto added = specFutureWork(section(test::readFileText(kDocsSpec), "## 6.", "\n## 7."));
     ASSERT_TRUE(added.count("Camera") && added.count("Material"));
     ASSERT_EQ(added.at("Camera").size(), 3u);
     EXPECT_EQ(added.at("Camera").at(1).name, "FocalDistance");

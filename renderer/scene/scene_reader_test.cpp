@@ -15,6 +15,7 @@
 #include "fetched_assets.h"
 #include "scene/csg_reader.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
@@ -30,12 +31,7 @@ Result readText(const std::string& text, const std::string& path = "t.scene") {
     return r;
 }
 
-std::string listed(const Diagnostics& d, bool errorsOnly = false) {
-    std::string s;
-    for (const Diagnostic& x : d.items)
-        if (!errorsOnly || x.severity == Severity::Error) s += formatDiagnostic(x) + "\n";
-    return s;
-}
+std::string listed(const Diagnostics& d, bool errorsOnly = false) { return test::listedDiagnostics(d, errorsOnly); }
 
 void expectVec(Vec3 v, float x, float y, float z) {
     EXPECT_FLOAT_EQ(v.x, x);

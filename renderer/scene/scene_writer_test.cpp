@@ -9,16 +9,12 @@
 
 #include "scene/scene_reader.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
 
-std::string listed(const Diagnostics& d) {
-    std::string s;
-    for (const Diagnostic& x : d.items)
-        if (x.severity == Severity::Error) s += formatDiagnostic(x) + "\n";
-    return s;
-}
+std::string listed(const Diagnostics& d) { return test::listedDiagnostics(d, true); }
 
 // Bit-for-bit equality of floats (the writer prints enough digits for it).
 bool same(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }

@@ -4,8 +4,6 @@
 #include <FreeImage.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "test_paths.h"
 
 namespace trazo {
@@ -86,8 +84,7 @@ TEST(TextureReader, MissingFileIsReportedAtTheSourceLine) {
 }
 
 TEST(TextureReader, UndecodableFileIsReported) {
-    const std::string path = test::tempPath("junk.png");
-    std::ofstream(path) << "this is not an image";
+    const std::string path = test::writeTempFile("junk.png", "this is not an image");
     Diagnostics diags;
     EXPECT_FALSE(readTextureImage(path, {"t.scene", 9, 0}, diags));
     ASSERT_EQ(diags.items.size(), 1u);
