@@ -33,68 +33,76 @@ struct SpecParam {
     std::string defaultText;
 };
 
-// §3 paragraphs look like "**Sphere** — `Material` name; `Center` [0 0 0]; `Radius` [1]. More text."
-// The parameters are the backticked names of the first sentence; "`A/B/C`" names three; "transforms as for
-// Box" names Box's transforms.
-std::map<std::string, std::vector<SpecParam>> specBlocks(const std::string& text) {
-    std::map<std::string, std::vector<SpecParam>> blocks;
-    static const std::regex kHead(R"(^\*\*(\w+)\*\* — (.*)$)");
+// The default in the text after a parameter's name: "—" (required), else the first bracketed value that is not
+// "[decided …]" or "[ext…]", else "".
+std::string defaultIn(const std::string& after) {
+    std::string defaultText;
+    if (after.find("—") != std::string::npos) defaultText = "—";
+    static const std::regex kBracket(R"(\[([^\]]*)\])");
+    for (std::sregex_iterator it(after.begin(), after.end(), kBracket), e; it != e; ++it) {
+        const std::string b = (*it)[1].str();
+        if (b.rfind("decided", 0) == 0 || b.rfind("ext", 0) == 0) continue;
+        return b;
+    }
+    return defaultText;
+}
+
+// The parameters a paragraph names: the backticked names of its first sentence ("`A/B/C`" names three), and
+// Box's transforms where that sentence says "transforms as for Box".
+std::vector<SpecParam> paragraphParams(std::string sentence) {
     static const std::regex kSentenceEnd(R"(\.(\s|$))");
+    std::smatch end;
+    if (std::regex_search(sentence, end, kSentenceEnd)) sentence.resize(size_t(end.position(0)));
+    std::vector<SpecParam> params;
+    size_t pos = 0;
+    while ((pos = sentence.find('`', pos)) != std::string::npos) {
+        const size_t close = sentence.find('`', pos + 1);
+        const std::string inside = sentence.substr(pos + 1, close - pos - 1);
+        size_t stop = sentence.find_first_of("`;", close + 1);
+        if (stop == std::string::npos) stop = sentence.size();
+        const std::string defaultText = defaultIn(sentence.substr(close + 1, stop - close - 1));
+        std::istringstream names(inside.substr(0, inside.find(' ')));
+        std::string name;
+        while (std::getline(names, name, '/')) params.push_back({name, defaultText});
+        pos = close + 1;
+    }
+    if (sentence.find("transforms as for Box") != std::string::npos) {
+        for (const char* t : {"Translation", "Rotation", "Scale"}) params.push_back({t, ""});
+    }
+    return params;
+}
+
+using SpecBlocks = std::map<std::string, std::vector<SpecParam>>;
+
+// Each line of `text` that `lineForm` matches whole gives block m[1] the parameters of the paragraph m[2], less
+// what `remarks` matches (where given).
+SpecBlocks specParams(const std::string& text, const std::regex& lineForm, const std::regex* remarks = nullptr) {
+    SpecBlocks blocks;
     std::istringstream lines(text);
     std::string line;
+    std::smatch m;
     while (std::getline(lines, line)) {
-        std::smatch m;
-        if (!std::regex_match(line, m, kHead)) continue;
-        std::string sentence = m[2].str();
-        std::smatch end;
-        if (std::regex_search(sentence, end, kSentenceEnd)) sentence.resize(size_t(end.position(0)));
-        std::vector<SpecParam>& params = blocks[m[1].str()];
-        size_t pos = 0;
-        while ((pos = sentence.find('`', pos)) != std::string::npos) {
-            const size_t close = sentence.find('`', pos + 1);
-            const std::string inside = sentence.substr(pos + 1, close - pos - 1);
-            size_t stop = sentence.find_first_of("`;", close + 1);
-            if (stop == std::string::npos) stop = sentence.size();
-            const std::string after = sentence.substr(close + 1, stop - close - 1);
-            std::string defaultText;
-            if (after.find("—") != std::string::npos) defaultText = "—";
-            static const std::regex kBracket(R"(\[([^\]]*)\])");
-            for (std::sregex_iterator it(after.begin(), after.end(), kBracket), e; it != e; ++it) {
-                const std::string b = (*it)[1].str();
-                if (b.rfind("decided", 0) == 0 || b.rfind("ext", 0) == 0) continue;
-                defaultText = b;
-                break;
-            }
-            std::istringstream names(inside.substr(0, inside.find(' ')));
-            std::string name;
-            while (std::getline(names, name, '/')) params.push_back({name, defaultText});
-            pos = close + 1;
-        }
-        if (sentence.find("transforms as for Box") != std::string::npos) {
-            for (const char* t : {"Translation", "Rotation", "Scale"}) params.push_back({t, ""});
-        }
+        if (!std::regex_match(line, m, lineForm)) continue;
+        const std::vector<SpecParam> params =
+            paragraphParams(remarks ? std::regex_replace(m[2].str(), *remarks, "") : m[2].str());
+        std::vector<SpecParam>& into = blocks[m[1].str()];
+        into.insert(into.end(), params.begin(), params.end());
     }
     return blocks;
 }
 
-// §6 adds parameters to §3's blocks in lines like "- **Fresnel** (Material): `Fresnel` 0|1 [0]. More text.":
-// the first sentence's backticked names, once parenthesised remarks (which may quote other names) are dropped.
-std::map<std::string, std::vector<SpecParam>> specFutureWork(const std::string& text) {
-    std::map<std::string, std::vector<SpecParam>> blocks;
+// §3 paragraphs look like "**Sphere** — `Material` name; `Center` [0 0 0]; `Radius` [1]. More text."
+SpecBlocks specBlocks(const std::string& text) {
+    static const std::regex kHead(R"(^\*\*(\w+)\*\* — (.*)$)");
+    return specParams(text, kHead);
+}
+
+// §6 adds parameters to §3's blocks in lines like "- **Fresnel** (Material): `Fresnel` 0|1 [0]. More text.",
+// once parenthesised remarks (which may quote other names) are dropped.
+SpecBlocks specFutureWork(const std::string& text) {
     static const std::regex kItem(R"(^- \*\*[^*]+\*\* \((\w+)\): (.*)$)");
     static const std::regex kRemark(R"( \([^()]*\))");
-    std::istringstream lines(text);
-    std::string line;
-    while (std::getline(lines, line)) {
-        std::smatch m;
-        if (!std::regex_match(line, m, kItem)) continue;
-        const std::string block = m[1].str();
-        const std::string paragraph = "**" + block + "** — " + std::regex_replace(m[2].str(), kRemark, "");
-        const auto parsed = specBlocks(paragraph);
-        if (const auto it = parsed.find(block); it != parsed.end())
-            blocks[block].insert(blocks[block].end(), it->second.begin(), it->second.end());
-    }
-    return blocks;
+    return specParams(text, kItem, &kRemark);
 }
 
 // As the reader stores them: floats. The tables' default texts are scene.h's float initialisers written with
