@@ -88,10 +88,10 @@ double rmse(const RenderedImage& a, const RenderedImage& b) {
     return std::sqrt(sum / (3.0 * a.pixels.size()));
 }
 
-std::string settingsText(int width, int height, int reflectionQuality, int indirectQuality) {
+std::string settingsText(int width, int height, int reflectionQuality, int indirectQuality, const std::string& more) {
     return "SceneSettings\n{\nRenderWidth " + std::to_string(width) + "\nRenderHeight " + std::to_string(height) +
            "\nReflectionQuality " + std::to_string(reflectionQuality) + "\nIndirectQuality " +
-           std::to_string(indirectQuality) + "\n}\n";
+           std::to_string(indirectQuality) + "\n" + more + "}\n";
 }
 
 std::string cameraText(const std::string& pov, const std::string& poi, const std::string& fov) {

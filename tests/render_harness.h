@@ -50,7 +50,8 @@ void translateScene(Scene& scene, Vec3 delta);
 double rmse(const RenderedImage& a, const RenderedImage& b);
 
 // Scene text block by block (SPEC §3), a parameter a line, for the scenes the suites write.
-std::string settingsText(int width, int height, int reflectionQuality, int indirectQuality);
+std::string settingsText(int width, int height, int reflectionQuality, int indirectQuality,
+                         const std::string& more = "");  // more: further lines of the block
 std::string cameraText(const std::string& pov, const std::string& poi, const std::string& fov);
 // A material with no diffuse or specular colour (Kd = Ks = 0): glass, a lamp. `lines`: its other parameters.
 std::string blackMaterialText(const std::string& name, const std::string& lines);
