@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
+#include <cstdio>
 #include <memory>
 
 #include "flatten/flatten.h"
@@ -105,9 +105,13 @@ TEST_F(Convergence, TargetErrorStopsNearTheTarget) {
     }
 }
 
-// The CLI's exit status, its stderr in `errors`.
-int trazoStatus(const std::string& arguments, std::string& errors) {
-    CommandResult r = runTrazo(arguments);
+// trazo --render `scene` with `options` and --stats: the exit status; the stats in `json`, stderr in `errors`.
+int renderStats(const std::string& scene, const std::string& options, std::string& json, std::string& errors) {
+    const std::string stats = tempPath("cli_stats.json");
+    std::remove(stats.c_str());
+    CommandResult r = runTrazo("--render " + scene + " -o " + tempPath("cli_render.png") + " --stats " + stats + " " +
+                               options);
+    json = readFileText(stats);
     errors = std::move(r.errors);
     return r.status;
 }
@@ -119,12 +123,9 @@ double jsonNumber(const std::string& json, const std::string& key) {
 }
 
 TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
-    const std::string scene = tempPath("cli_penumbra.scene");
-    std::ofstream(scene) << kPenumbraScene;
-    const std::string out = tempPath("cli_penumbra.png"), stats = tempPath("cli_penumbra.json");
-    std::string errors;
-    ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --spp 64 --stats " + stats, errors), 0) << errors;
-    std::string json = readFileText(stats);
+    const std::string scene = writeTempFile("cli_penumbra.scene", kPenumbraScene);
+    std::string json, errors;
+    ASSERT_EQ(renderStats(scene, "--spp 64", json, errors), 0) << errors;
     const double estimate = jsonNumber(json, "estimated_rel_error");
     EXPECT_GT(estimate, 0.001) << json;
     EXPECT_LT(estimate, 0.2) << json;
@@ -133,12 +134,7 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
 
     // One stratum per pass (a 16-pass cycle), and the default blocks (the whole light per pass: a 1-pass cycle).
     for (const char* blocks : {"--blocks 1", ""}) {
-        ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --target-error 0.03 --quiet --stats " + stats +
-                               " " + blocks,
-                           errors),
-                  0)
-            << errors;
-        json = readFileText(stats);
+        ASSERT_EQ(renderStats(scene, std::string("--target-error 0.03 --quiet ") + blocks, json, errors), 0) << errors;
         EXPECT_NE(json.find("\"reached_target\": true"), std::string::npos) << json;
         EXPECT_LE(jsonNumber(json, "estimated_rel_error"), 0.03) << json;
         const double spp = jsonNumber(json, "spp"), cycle = jsonNumber(json, "full_cycle_spp");
@@ -150,18 +146,12 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
     }
 
     // One pass states its error too (the error probe), and a loose target is met by the first pass.
-    ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --spp 1 --fixed-grid --quiet --stats " + stats, errors),
-              0)
-        << errors;
-    json = readFileText(stats);
+    ASSERT_EQ(renderStats(scene, "--spp 1 --fixed-grid --quiet", json, errors), 0) << errors;
     EXPECT_GT(jsonNumber(json, "estimated_rel_error"), 0.001) << json;
     EXPECT_LT(jsonNumber(json, "estimated_rel_error"), 0.2) << json;
     EXPECT_NE(json.find("\"estimate_balanced\": true"), std::string::npos) << json;
     EXPECT_NE(json.find("\"fixed_grid\": true"), std::string::npos) << json;
-    ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --target-error 0.5 --quiet --stats " + stats, errors),
-              0)
-        << errors;
-    json = readFileText(stats);
+    ASSERT_EQ(renderStats(scene, "--target-error 0.5 --quiet", json, errors), 0) << errors;
     EXPECT_NE(json.find("\"reached_target\": true"), std::string::npos) << json;
     EXPECT_EQ(jsonNumber(json, "spp"), 1.0) << json;
 }
@@ -170,31 +160,19 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
 // and meets any target error with its first pass.
 TEST(ConvergenceCli, ANoiselessRenderStatesZeroWithoutAProbe) {
     const std::string scene = sourcePath("scenes/scene1_point.scene");
-    const std::string out = tempPath("cli_point.png"), stats = tempPath("cli_point.json");
-    std::string errors;
-    ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --width 64 --height 48 --stats " + stats, errors), 0)
-        << errors;
-    std::string json = readFileText(stats);
+    std::string json, errors;
+    ASSERT_EQ(renderStats(scene, "--width 64 --height 48", json, errors), 0) << errors;
     EXPECT_EQ(jsonNumber(json, "estimated_rel_error"), 0.0) << json;
     EXPECT_EQ(jsonNumber(json, "error_probe_pixels"), 0.0) << json;
     EXPECT_NE(json.find("\"no_sampling_noise\": true"), std::string::npos) << json;
     EXPECT_NE(json.find("\"estimate_balanced\": true"), std::string::npos) << json;
     EXPECT_NE(errors.find("relative error 0 (no sampling noise"), std::string::npos) << errors;
-    ASSERT_EQ(trazoStatus("--render " + scene + " -o " + out + " --width 64 --height 48 --target-error 0.0001 --quiet "
-                           "--stats " + stats,
-                       errors),
-              0)
-        << errors;
-    json = readFileText(stats);
+    ASSERT_EQ(renderStats(scene, "--width 64 --height 48 --target-error 0.0001 --quiet", json, errors), 0) << errors;
     EXPECT_NE(json.find("\"reached_target\": true"), std::string::npos) << json;
     EXPECT_EQ(jsonNumber(json, "spp"), 1.0) << json;
     // A scene with noise keeps its probe.
-    ASSERT_EQ(trazoStatus("--render " + sourcePath("scenes/scene1_area.scene") + " -o " + out +
-                           " --width 64 --height 48 --quiet --stats " + stats,
-                       errors),
-              0)
+    ASSERT_EQ(renderStats(sourcePath("scenes/scene1_area.scene"), "--width 64 --height 48 --quiet", json, errors), 0)
         << errors;
-    json = readFileText(stats);
     EXPECT_GT(jsonNumber(json, "error_probe_pixels"), 0.0) << json;
     EXPECT_NE(json.find("\"no_sampling_noise\": false"), std::string::npos) << json;
 }
