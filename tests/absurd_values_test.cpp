@@ -112,12 +112,6 @@ std::string mirrorBox(int steps) {
            "Box\n{\n    Material mirror\n    Scale 4 4 4\n}\nPointLight\n{\n    Position 0 1 0\n}\n";
 }
 
-std::string writeScene(const std::string& name, const std::string& text) {
-    const std::string path = tempPath(name);
-    std::ofstream(path) << text;
-    return path;
-}
-
 struct Case {
     const char* name;
     std::string scene;
@@ -142,7 +136,7 @@ TEST(AbsurdValues, StrataThatWouldOverflowAreRefusedWithTheirLine) {
         {"Subdivision", sceneText("", "AreaLight\n{\n    Subdivision 2147483647 2\n}\n"), {"--spp", "1"}},
     };
     for (const Case& c : cases) {
-        const std::string scene = writeScene(std::string("absurd_") + c.name + ".scene", c.scene);
+        const std::string scene = writeTempFile(std::string("absurd_") + c.name + ".scene", c.scene);
         const std::string out = tempPath("absurd.png");
         fs::remove(out);
         const Limited r = runLimited(renderArgs(scene, out, c.extraArgs), 30);
@@ -170,7 +164,7 @@ TEST(AbsurdValues, ValuesInsideTheBoundsRenderQuickly) {
          {"--spp", "1", "--blocks", "1,1048572,1,1", "--width", "4", "--height", "4"}},
     };
     for (const Case& c : cases) {
-        const std::string scene = writeScene(std::string("inside_") + c.name + ".scene", c.scene);
+        const std::string scene = writeTempFile(std::string("inside_") + c.name + ".scene", c.scene);
         const std::string out = tempPath("inside.png");
         fs::remove(out);
         const Limited r = runLimited(renderArgs(scene, out, c.extraArgs), 60);
@@ -186,7 +180,7 @@ TEST(AbsurdValues, ValuesInsideTheBoundsRenderQuickly) {
 // A 16384² image (its accumulation alone is 16 GiB) is refused up front, naming the bytes it needs, under a
 // memory limit it cannot fit: at once, status 1, no image (it used to fail after the render, or abort).
 TEST(AbsurdValues, AnImageTooLargeForMemoryIsRefusedBeforeRendering) {
-    const std::string scene = writeScene("absurd_size.scene", sceneText(""));
+    const std::string scene = writeTempFile("absurd_size.scene", sceneText(""));
     const std::string out = tempPath("absurd_size.png");
     fs::remove(out);
     const Limited r = runLimited(renderArgs(scene, out, {"--width", "16384", "--height", "16384"}), 30);
@@ -207,7 +201,7 @@ TEST(AbsurdValues, OutOfMemoryWhileReadingIsAnErrorNotAnAbort) {
     { std::ofstream(big) << "v 0 0 0\n"; }
     fs::resize_file(big, uintmax_t(1000) << 20);
     for (const std::string& source : {big, std::string("/dev/zero")}) {
-        const std::string scene = writeScene(
+        const std::string scene = writeTempFile(
             "absurd_read.scene", sceneText("", "Mesh\n{\n    Material white\n    Source \"" + source + "\"\n}\n"));
         const std::string out = tempPath("absurd_read.png");
         fs::remove(out);
@@ -228,7 +222,7 @@ TEST(AbsurdValues, OutOfMemoryWhileReadingIsAnErrorNotAnAbort) {
 // A default render that would run long (here 18 glossy passes of 2·724² indirect directions a camera hit) says what
 // it will cost before it starts; the test stops it once it has.
 TEST(AbsurdValues, ALongDefaultRenderIsAnnouncedFirst) {
-    const std::string scene = writeScene("absurd_long.scene", sceneText("    IndirectQuality 724\n"));
+    const std::string scene = writeTempFile("absurd_long.scene", sceneText("    IndirectQuality 724\n"));
     const std::string out = tempPath("absurd_long.png");
     fs::remove(out);
     const Limited r = runLimited(renderArgs(scene, out, {"--width", "512", "--height", "512"}), 30,
@@ -320,7 +314,7 @@ struct GeometryCase {
 
 // Renders `c` to a PFM under the limits: status 0 within 20 s, every pixel finite, and what it expects.
 void expectRenders(const GeometryCase& c, double maxSeconds = 20) {
-    const std::string scene = writeScene("geometry_" + c.name + ".scene", c.scene);
+    const std::string scene = writeTempFile("geometry_" + c.name + ".scene", c.scene);
     const std::string out = tempPath("geometry.pfm");
     fs::remove(out);
     const Limited r = runLimited(renderArgs(scene, out, {}), maxSeconds);
@@ -456,7 +450,7 @@ TEST(AbsurdGeometry, TenThousandObjectsRenderQuickly) {
 // Renders `c`, which must be refused: status 2 within 20 s, `where` (the file's name and line) and `reason` in
 // the message, no image.
 void expectRefused(const GeometryCase& c, const std::string& where, const std::string& reason) {
-    const std::string scene = writeScene("refused_" + c.name + ".scene", c.scene);
+    const std::string scene = writeTempFile("refused_" + c.name + ".scene", c.scene);
     const std::string out = tempPath("refused.pfm");
     fs::remove(out);
     const Limited r = runLimited(renderArgs(scene, out, {}), 20);
@@ -517,7 +511,7 @@ TEST(AbsurdGeometry, FarLightsLightUpToTheirBoundAndAreRefusedBeyond) {
         };
         std::vector<float> centre;  // the centre pixel's red, for the light at 1e6 and at 1e18
         for (const char* z : {"1e6", "1e18"}) {
-            const std::string scene = writeScene("far_light.scene", geometryScene(sphere, "0 0 5", light(z)));
+            const std::string scene = writeTempFile("far_light.scene", geometryScene(sphere, "0 0 5", light(z)));
             const std::string out = tempPath("far_light.pfm");
             fs::remove(out);
             const Limited r = runLimited(renderArgs(scene, out, {}), 20);

@@ -1,8 +1,6 @@
 // The trazo command line as a user meets it: exit codes, FILE:LINE errors, no image on failure, stats.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <filesystem>
 #include <fstream>
 
@@ -15,27 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-    int status = -1;
-    std::string errors;  // stderr
-};
-
-CommandResult runTrazo(const std::string& arguments) {
-    const std::string errFile = tempPath("stderr.txt");
-    const std::string command = trazoBinary() + " " + arguments + " 2>" + errFile + " >/dev/null";
-    const int raw = std::system(command.c_str());
-    CommandResult r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.errors = readFileText(errFile);
-    return r;
-}
-
-std::string writeFile(const std::string& name, const std::string& text) {
-    const std::string path = tempPath(name);
-    std::ofstream(path) << text;
-    return path;
-}
-
 const char* kSmallScene =
     "SceneSettings\n{\n    RenderWidth 16\n    RenderHeight 12\n}\n"
     "Camera\n{\n    POV 0 0 5\n}\n"
@@ -44,7 +21,7 @@ const char* kSmallScene =
     "PointLight\n{\n    Position 2 2 2\n}\n";
 
 TEST(Cli, RendersAFileAndWritesStats) {
-    const std::string scene = writeFile("small.scene", kSmallScene);
+    const std::string scene = writeTempFile("small.scene", kSmallScene);
     const std::string out = tempPath("small.png"), stats = tempPath("small.json");
     fs::remove(out);
     const CommandResult r = runTrazo("--render " + scene + " -o " + out + " --stats " + stats + " --quiet");
@@ -62,7 +39,7 @@ TEST(Cli, RendersAFileAndWritesStats) {
 }
 
 TEST(Cli, BadSceneGivesFileLineExitTwoAndNoImage) {
-    const std::string scene = writeFile("bad.scene",
+    const std::string scene = writeTempFile("bad.scene",
                                         "Camera\n{\n    POV 0 0 5\n}\nSphere\n{\n    Radius 1\n    Radus 2\n}\n");
     const std::string out = tempPath("bad.png");
     fs::remove(out);
@@ -76,7 +53,7 @@ TEST(Cli, BadSceneGivesFileLineExitTwoAndNoImage) {
 // A malformed --blocks is a usage error (exit 2, the option and the accepted forms named, no image); a good one
 // is what the stats report.
 TEST(Cli, BlocksAreParsedOrRefused) {
-    const std::string scene = writeFile("blocks.scene", kSmallScene);
+    const std::string scene = writeTempFile("blocks.scene", kSmallScene);
     const std::string out = tempPath("blocks.png"), stats = tempPath("blocks.json");
     fs::remove(out);
     for (const char* bad : {"0", "1,2", "x"}) {
@@ -92,8 +69,8 @@ TEST(Cli, BlocksAreParsedOrRefused) {
 }
 
 TEST(Cli, FailedRenderLeavesAnExistingImageAlone) {
-    const std::string scene = writeFile("bad2.scene", "Sphere\n{\n    Radius -1\n}\n");
-    const std::string out = writeFile("keep.png", "previous contents");
+    const std::string scene = writeTempFile("bad2.scene", "Sphere\n{\n    Radius -1\n}\n");
+    const std::string out = writeTempFile("keep.png", "previous contents");
     EXPECT_EQ(runTrazo("--render " + scene + " -o " + out).status, 2);
     std::ifstream in(out);
     std::string contents;
@@ -108,7 +85,7 @@ TEST(Cli, MissingSceneFileIsABadSceneError) {
 }
 
 TEST(Cli, BadUsageExitsTwo) {
-    const std::string scene = writeFile("usage.scene", kSmallScene);
+    const std::string scene = writeTempFile("usage.scene", kSmallScene);
     EXPECT_EQ(runTrazo("--render " + scene + " -o " + tempPath("out.xyz")).status, 2);
     EXPECT_EQ(runTrazo("--render " + scene + " --spp 0").status, 2);
     EXPECT_EQ(runTrazo("--render " + scene + " --backend metal").status, 2);
@@ -121,7 +98,7 @@ TEST(Cli, BadUsageExitsTwo) {
 TEST(Cli, CudaRequestedWithoutADeviceIsARuntimeFailure) {
     std::string device;
     if (cudaDeviceAvailable(device)) GTEST_SKIP() << "a CUDA device is present: " << device;
-    const std::string scene = writeFile("cuda.scene", kSmallScene);
+    const std::string scene = writeTempFile("cuda.scene", kSmallScene);
     const std::string out = tempPath("cuda.png");
     fs::remove(out);
     const CommandResult r = runTrazo("--render " + scene + " --backend cuda -o " + out);
@@ -131,7 +108,7 @@ TEST(Cli, CudaRequestedWithoutADeviceIsARuntimeFailure) {
 }
 
 TEST(Cli, TimeBudgetStopsTheRender) {
-    const std::string scene = writeFile("timed.scene", kSmallScene);
+    const std::string scene = writeTempFile("timed.scene", kSmallScene);
     const std::string stats = tempPath("timed.json");
     const CommandResult r =
         runTrazo("--render " + scene + " -o " + tempPath("timed.bmp") + " --time 0.3 --quiet --stats " + stats);
@@ -180,30 +157,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct HostileResult {
-    int status = -1;
-    std::string errors;
-};
+using HostileResult = CommandResult;
 
 // trazo --render on `scene`, killed after `seconds` (status 124 then: a hang); the image must not appear.
 HostileResult renderHostile(const std::string& scene, const std::string& name, int seconds = 20) {
-    const std::string out = tempPath(name + ".png"), errFile = tempPath(name + ".err");
+    const std::string out = tempPath(name + ".png");
     fs::remove(out);
-    const std::string command = "timeout -k 5 " + std::to_string(seconds) + " " + trazoBinary() + " --render '" +
-                                scene + "' -o '" + out + "' --width 8 --height 8 --spp 1 --quiet 2>'" + errFile +
-                                "' >/dev/null </dev/null";
-    const int raw = std::system(command.c_str());
-    HostileResult r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.errors = readFileText(errFile);
+    const HostileResult r = runCommand("timeout -k 5 " + std::to_string(seconds) + " " + trazoBinary() + " --render '" +
+                                       scene + "' -o '" + out + "' --width 8 --height 8 --spp 1 --quiet");
     EXPECT_FALSE(fs::exists(out)) << name << ": an image was written";
     return r;
-}
-
-std::string writeBytes(const std::string& name, const std::string& bytes) {
-    const std::string path = tempPath(name);
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
 }
 
 size_t lineCount(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
@@ -214,25 +177,25 @@ const char* kHostileHead =
 TEST(CliHostile, HundredThousandNestedBraces) {
     std::string lines = "Sphere\n";
     for (int i = 0; i < 100000; ++i) lines += "{\n";
-    const HostileResult r = renderHostile(writeBytes("nest.scene", lines), "nest");
+    const HostileResult r = renderHostile(writeTempFile("nest.scene", lines), "nest");
     EXPECT_EQ(r.status, 2) << r.errors;
     EXPECT_NE(r.errors.find("nest.scene:1: error: unterminated block 'Sphere'"), std::string::npos) << r.errors;
     EXPECT_NE(r.errors.find("too many syntax errors"), std::string::npos) << r.errors;
     EXPECT_LE(lineCount(r.errors), size_t(kMaxLexerErrors) + 10);
     std::string braces = "Sphere";  // and as many as fit on one line (this recursed once a brace)
     while (braces.size() + 2 <= kMaxLineBytes) braces += " {";
-    const HostileResult one = renderHostile(writeBytes("nest1.scene", braces + "\n"), "nest1");
+    const HostileResult one = renderHostile(writeTempFile("nest1.scene", braces + "\n"), "nest1");
     EXPECT_EQ(one.status, 2) << one.errors;
     EXPECT_NE(one.errors.find("nest1.scene:1:"), std::string::npos) << one.errors;
 }
 
 TEST(CliHostile, LongLinesAndHugeFilesAreRefused) {
     const std::string line = "Sphere\n{\n    Radius 1 #" + std::string(kMaxLineBytes, '#') + "\n}\n";
-    const HostileResult r = renderHostile(writeBytes("long.scene", kHostileHead + line), "long");
+    const HostileResult r = renderHostile(writeTempFile("long.scene", kHostileHead + line), "long");
     EXPECT_EQ(r.status, 2) << r.errors;
     EXPECT_NE(r.errors.find("long.scene:15: error: line too long ("), std::string::npos) << r.errors;
     // A file that claims 2^31 + 1 bytes (sparse: nothing is written) is refused before it is read.
-    const std::string huge = writeBytes("huge.scene", kSmallScene);
+    const std::string huge = writeTempFile("huge.scene", kSmallScene);
     ASSERT_EQ(::truncate(huge.c_str(), (off_t(1) << 31) + 1), 0);
     const HostileResult h = renderHostile(huge, "huge", 10);
     EXPECT_EQ(h.status, 2) << h.errors;
@@ -241,10 +204,10 @@ TEST(CliHostile, LongLinesAndHugeFilesAreRefused) {
         << h.errors;
     fs::remove(huge);
     // A CSG file over the scene-file limit, named by a Source line: that line, and the reason.
-    const std::string csg = writeBytes("huge.csg", "");
+    const std::string csg = writeTempFile("huge.csg", "");
     ASSERT_EQ(::truncate(csg.c_str(), off_t(kMaxSceneFileBytes) + 1), 0);
     const HostileResult c = renderHostile(
-        writeBytes("hugecsg.scene", std::string(kHostileHead) + "CSG\n{\n    Material white\n    Source \"huge.csg\"\n}\n"),
+        writeTempFile("hugecsg.scene", std::string(kHostileHead) + "CSG\n{\n    Material white\n    Source \"huge.csg\"\n}\n"),
         "hugecsg");
     EXPECT_EQ(c.status, 2) << c.errors;
     EXPECT_NE(c.errors.find("hugecsg.scene:16:"), std::string::npos) << c.errors;
@@ -268,7 +231,7 @@ TEST(CliHostile, FifoIsRefusedNotWaitedFor) {
     };
     for (const auto& c : cases) {
         const HostileResult r =
-            renderHostile(writeBytes(std::string(c.name) + ".scene", kHostileHead + c.block), c.name);
+            renderHostile(writeTempFile(std::string(c.name) + ".scene", kHostileHead + c.block), c.name);
         EXPECT_EQ(r.status, 2) << c.name << ": " << r.errors;
         EXPECT_NE(r.errors.find(std::string(c.name) + ".scene:16:"), std::string::npos) << r.errors;
         EXPECT_NE(r.errors.find("not a regular file (a FIFO)"), std::string::npos) << r.errors;
@@ -283,9 +246,9 @@ TEST(CliHostile, FifoIsRefusedNotWaitedFor) {
 
 // A NUL inside a Source path would open the file named by the bytes before it and cut every message short.
 TEST(CliHostile, NulInASourcePathIsAnError) {
-    writeBytes("nul.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    writeTempFile("nul.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     const std::string mesh = std::string("Mesh\n{\n    Material white\n    Source \"nul.obj") + '\0' + "x.obj\"\n}\n";
-    const HostileResult r = renderHostile(writeBytes("nul.scene", kHostileHead + mesh), "nul");
+    const HostileResult r = renderHostile(writeTempFile("nul.scene", kHostileHead + mesh), "nul");
     EXPECT_EQ(r.status, 2) << r.errors;
     EXPECT_NE(r.errors.find("nul.scene:16:20: error: NUL byte in the text (not allowed)"), std::string::npos)
         << r.errors;
@@ -297,7 +260,7 @@ TEST(CliHostile, EmptySourceIsAnError) {
     for (const char* block : {"Texture\n{\n    Name t\n    Source \"\"\n}\n",
                               "Mesh\n{\n    Material white\n    Source \"\"\n}\n",
                               "CSG\n{\n    Material white\n    Source \"\"\n}\n"}) {
-        const HostileResult r = renderHostile(writeBytes("empty.scene", kHostileHead + std::string(block)), "empty");
+        const HostileResult r = renderHostile(writeTempFile("empty.scene", kHostileHead + std::string(block)), "empty");
         EXPECT_EQ(r.status, 2) << block << r.errors;
         EXPECT_NE(r.errors.find("empty.scene:16:12: error: Source: empty path"), std::string::npos) << r.errors;
     }

@@ -2,31 +2,23 @@
 // near its target, the CLI reports the estimate, and the benchmark's log–log slope is about −1/2.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <cmath>
-#include <fstream>
+#include <cstdio>
 #include <memory>
 
 #include "flatten/flatten.h"
 #include "scene/scene_reader.h"
 #include "support/convergence_series.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo::test {
 namespace {
 
 using namespace trazo::convergence;
 
-// A sphere over a floor under a 4×4 area light (cycle 16): a penumbra, so the image is noisy.
-const char* kPenumbraScene =
-    "SceneSettings\n{\n    RenderWidth 40\n    RenderHeight 30\n    IndirectQuality 0\n}\n"
-    "Camera\n{\n    POV 0 3 8\n    POI 0 1 0\n    FOV 45\n}\n"
-    "Material\n{\n    Name white\n    DiffuseColor 0.8 0.8 0.8\n}\n"
-    "Box\n{\n    Material white\n    Scale 8 0.2 8\n    Translation 0 -0.1 0\n}\n"
-    "Sphere\n{\n    Material white\n    Center 0 1 0\n    Radius 1\n}\n"
-    "AreaLight\n{\n    Position 0.5 4 0\n    Direction 0 -1 0\n    Width 3\n    Height 3\n    Subdivision 4 4\n"
-    "    Color 1 1 1\n}\n";
+const std::string kPenumbraScene =
+    penumbraSceneText("    RenderWidth 40\n    RenderHeight 30\n    IndirectQuality 0\n");
 
 class Convergence : public ::testing::Test {
 protected:
@@ -113,11 +105,15 @@ TEST_F(Convergence, TargetErrorStopsNearTheTarget) {
     }
 }
 
-int runTrazo(const std::string& arguments, std::string& errors) {
-    const std::string errFile = tempPath("convergence_stderr.txt");
-    const int raw = std::system((trazoBinary() + " " + arguments + " 2>" + errFile + " >/dev/null").c_str());
-    errors = readFileText(errFile);
-    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+// trazo --render `scene` with `options` and --stats: the exit status; the stats in `json`, stderr in `errors`.
+int renderStats(const std::string& scene, const std::string& options, std::string& json, std::string& errors) {
+    const std::string stats = tempPath("cli_stats.json");
+    std::remove(stats.c_str());
+    CommandResult r = runTrazo("--render " + scene + " -o " + tempPath("cli_render.png") + " --stats " + stats + " " +
+                               options);
+    json = readFileText(stats);
+    errors = std::move(r.errors);
+    return r.status;
 }
 
 double jsonNumber(const std::string& json, const std::string& key) {
@@ -127,12 +123,9 @@ double jsonNumber(const std::string& json, const std::string& key) {
 }
 
 TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
-    const std::string scene = tempPath("cli_penumbra.scene");
-    std::ofstream(scene) << kPenumbraScene;
-    const std::string out = tempPath("cli_penumbra.png"), stats = tempPath("cli_penumbra.json");
-    std::string errors;
-    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --spp 64 --stats " + stats, errors), 0) << errors;
-    std::string json = readFileText(stats);
+    const std::string scene = writeTempFile("cli_penumbra.scene", kPenumbraScene);
+    std::string json, errors;
+    ASSERT_EQ(renderStats(scene, "--spp 64", json, errors), 0) << errors;
     const double estimate = jsonNumber(json, "estimated_rel_error");
     EXPECT_GT(estimate, 0.001) << json;
     EXPECT_LT(estimate, 0.2) << json;
@@ -141,12 +134,7 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
 
     // One stratum per pass (a 16-pass cycle), and the default blocks (the whole light per pass: a 1-pass cycle).
     for (const char* blocks : {"--blocks 1", ""}) {
-        ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --target-error 0.03 --quiet --stats " + stats +
-                               " " + blocks,
-                           errors),
-                  0)
-            << errors;
-        json = readFileText(stats);
+        ASSERT_EQ(renderStats(scene, std::string("--target-error 0.03 --quiet ") + blocks, json, errors), 0) << errors;
         EXPECT_NE(json.find("\"reached_target\": true"), std::string::npos) << json;
         EXPECT_LE(jsonNumber(json, "estimated_rel_error"), 0.03) << json;
         const double spp = jsonNumber(json, "spp"), cycle = jsonNumber(json, "full_cycle_spp");
@@ -158,18 +146,12 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
     }
 
     // One pass states its error too (the error probe), and a loose target is met by the first pass.
-    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --spp 1 --fixed-grid --quiet --stats " + stats, errors),
-              0)
-        << errors;
-    json = readFileText(stats);
+    ASSERT_EQ(renderStats(scene, "--spp 1 --fixed-grid --quiet", json, errors), 0) << errors;
     EXPECT_GT(jsonNumber(json, "estimated_rel_error"), 0.001) << json;
     EXPECT_LT(jsonNumber(json, "estimated_rel_error"), 0.2) << json;
     EXPECT_NE(json.find("\"estimate_balanced\": true"), std::string::npos) << json;
     EXPECT_NE(json.find("\"fixed_grid\": true"), std::string::npos) << json;
-    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --target-error 0.5 --quiet --stats " + stats, errors),
-              0)
-        << errors;
-    json = readFileText(stats);
+    ASSERT_EQ(renderStats(scene, "--target-error 0.5 --quiet", json, errors), 0) << errors;
     EXPECT_NE(json.find("\"reached_target\": true"), std::string::npos) << json;
     EXPECT_EQ(jsonNumber(json, "spp"), 1.0) << json;
 }
@@ -178,31 +160,19 @@ TEST(ConvergenceCli, StatsReportTheEstimateAndTargetErrorStops) {
 // and meets any target error with its first pass.
 TEST(ConvergenceCli, ANoiselessRenderStatesZeroWithoutAProbe) {
     const std::string scene = sourcePath("scenes/scene1_point.scene");
-    const std::string out = tempPath("cli_point.png"), stats = tempPath("cli_point.json");
-    std::string errors;
-    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --width 64 --height 48 --stats " + stats, errors), 0)
-        << errors;
-    std::string json = readFileText(stats);
+    std::string json, errors;
+    ASSERT_EQ(renderStats(scene, "--width 64 --height 48", json, errors), 0) << errors;
     EXPECT_EQ(jsonNumber(json, "estimated_rel_error"), 0.0) << json;
     EXPECT_EQ(jsonNumber(json, "error_probe_pixels"), 0.0) << json;
     EXPECT_NE(json.find("\"no_sampling_noise\": true"), std::string::npos) << json;
     EXPECT_NE(json.find("\"estimate_balanced\": true"), std::string::npos) << json;
     EXPECT_NE(errors.find("relative error 0 (no sampling noise"), std::string::npos) << errors;
-    ASSERT_EQ(runTrazo("--render " + scene + " -o " + out + " --width 64 --height 48 --target-error 0.0001 --quiet "
-                           "--stats " + stats,
-                       errors),
-              0)
-        << errors;
-    json = readFileText(stats);
+    ASSERT_EQ(renderStats(scene, "--width 64 --height 48 --target-error 0.0001 --quiet", json, errors), 0) << errors;
     EXPECT_NE(json.find("\"reached_target\": true"), std::string::npos) << json;
     EXPECT_EQ(jsonNumber(json, "spp"), 1.0) << json;
     // A scene with noise keeps its probe.
-    ASSERT_EQ(runTrazo("--render " + sourcePath("scenes/scene1_area.scene") + " -o " + out +
-                           " --width 64 --height 48 --quiet --stats " + stats,
-                       errors),
-              0)
+    ASSERT_EQ(renderStats(sourcePath("scenes/scene1_area.scene"), "--width 64 --height 48 --quiet", json, errors), 0)
         << errors;
-    json = readFileText(stats);
     EXPECT_GT(jsonNumber(json, "error_probe_pixels"), 0.0) << json;
     EXPECT_NE(json.find("\"no_sampling_noise\": false"), std::string::npos) << json;
 }

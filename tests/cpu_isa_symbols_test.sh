@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The AVX2 and AVX-512 kernels' objects (renderer/backends/cpu/tile_render_*.cpp, camera_tile_render_*.cpp) define no global code but
-# their entry point: every inline function and template they emit stays local (-fno-weak), so no baseline
-# caller can be linked to an AVX copy and the binary runs on any x86-64. Arguments: trazo_renderer's objects.
+# The AVX2 and AVX-512 kernels' objects (tile_render_*.cpp, camera_tile_render_*.cpp, generated from
+# renderer/backends/cpu/*_isa.cpp.in) define no global code but their entry point: every inline function and
+# template they emit stays local (-fno-weak), so no baseline caller can be linked to an AVX copy and the binary
+# runs on any x86-64. Arguments: trazo_renderer's objects.
 set -euo pipefail
 checked=0
 for object in "$@"; do

@@ -76,13 +76,9 @@ TEST(FresnelRender, MirrorInAnEmissiveEnclosureShowsFOfEachPixelsAngle) {
 // error of 7.3e-4; the bound is 4 of them.
 TEST(FresnelRender, GlassSlabHeadOnTransmitsOneMinusFOverOnePlusF) {
     auto slab = [](int fresnel) {
-        return "SceneSettings\n{\nRenderWidth 32\nRenderHeight 32\nReflectionQuality 1\nIndirectQuality 0\n}\n"
-               "Camera\n{\nPOV 0 0 10\nPOI 0 0 0\nFOV 1\n}\n"
-               "Material\n{\nName glass\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nOpacity 0\nRefractionIndex 1.5\n"
-               "Fresnel " + std::to_string(fresnel) + "\n}\n"
-               "Material\n{\nName wall\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nEmissiveColor 1 1 1\n}\n"
-               "Box\n{\nMaterial glass\nScale 100 100 1\n}\n"
-               "Box\n{\nMaterial wall\nTranslation 0 0 -5\nScale 1000 1000 1\n}\n";
+        return settingsText(32, 32, 1, 0) + cameraText("0 0 10", "0 0 0", "1") +
+               glassSlabBeforeWallText("Opacity 0\nRefractionIndex 1.5\nFresnel " + std::to_string(fresnel) + "\n", "1",
+                                       "-5");
     };
     const RenderedImage clear = renderSceneText(slab(0), {.passes = 2});
     for (const Vec3& p : clear.pixels) ASSERT_EQ(p.x, 1.0f) << "without Fresnel the slab lets everything through";
@@ -165,14 +161,8 @@ TEST(FutureWorkRender, EveryParameterAtZeroIsTheSection5Image) {
 // of the cone about a near-head-on ray crosses both faces and finds the wall, so the glossy slab passes all
 // the light a clear one does. A direction wrongly taken as staying inside, or lost on the way, shows as < 1.
 TEST(GlossyTransmissionRender, ConeThroughAClearSlabKeepsTheLight) {
-    const std::string scene =
-        "SceneSettings\n{\nRenderWidth 16\nRenderHeight 16\nReflectionQuality 3\nIndirectQuality 0\n}\n"
-        "Camera\n{\nPOV 0 0 10\nPOI 0 0 0\nFOV 5\n}\n"
-        "Material\n{\nName glass\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nOpacity 0\nRefractionIndex 1\n"
-        "RefractionAngle 40\n}\n"
-        "Material\n{\nName wall\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nEmissiveColor 1 1 1\n}\n"
-        "Box\n{\nMaterial glass\nScale 100 100 1\n}\n"
-        "Box\n{\nMaterial wall\nTranslation 0 0 -3\nScale 1000 1000 1\n}\n";
+    const std::string scene = settingsText(16, 16, 3, 0) + cameraText("0 0 10", "0 0 0", "5") +
+                              glassSlabBeforeWallText("Opacity 0\nRefractionIndex 1\nRefractionAngle 40\n", "1", "-3");
     const RenderedImage image = renderSceneText(scene, {.passes = 18});
     ASSERT_FALSE(image.pixels.empty());
     for (const Vec3& p : image.pixels) EXPECT_EQ(p.x, 1.0f);
@@ -181,9 +171,8 @@ TEST(GlossyTransmissionRender, ConeThroughAClearSlabKeepsTheLight) {
 // An emitter (Ke = 1) filling the box x ∈ [0, 100], |y| ≤ 50, z ∈ [front − 1, front]: the half-plane x > 0
 // behind the object under test.
 std::string halfPlaneLamp(double front) {
-    return "Material\n{\nName lamp\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nEmissiveColor 1 1 1\n}\n"
-           "Box\n{\nMaterial lamp\nScale 100 100 1\nTranslation 50 0 " +
-           std::to_string(front - 0.5) + "\n}\n";
+    return blackMaterialText("lamp", "EmissiveColor 1 1 1\n") +
+           "Box\n{\nMaterial lamp\nScale 100 100 1\nTranslation 50 0 " + std::to_string(front - 0.5) + "\n}\n";
 }
 
 // Vectors in double for the independent traces below.
@@ -204,13 +193,9 @@ D3 along(const D3& o, const D3& d, double t) { return {o[0] + d[0] * t, o[1] + d
 // 1° from the middle one's, which lengthens their paths by 0.015 %); the bound is 4.5 of them (and the oracle's).
 TEST(GlossyTransmissionRender, EdgeProfileMatchesAnIndependentTraceOfTheCones) {
     const int w = 48, h = 24;
-    const std::string scene =
-        "SceneSettings\n{\nRenderWidth 48\nRenderHeight 24\nReflectionQuality 3\nIndirectQuality 0\n}\n"
-        "Camera\n{\nPOV 0 0 10\nPOI 0 0 0\nFOV 2\n}\n"
-        "Material\n{\nName glass\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nOpacity 0\nRefractionIndex 1\n"
-        "RefractionAngle 20\n}\n"
-        "Box\n{\nMaterial glass\nScale 100 100 0.2\n}\n" +
-        halfPlaneLamp(-0.4);
+    const std::string scene = settingsText(w, h, 3, 0) + cameraText("0 0 10", "0 0 0", "2") +
+                              blackMaterialText("glass", "Opacity 0\nRefractionIndex 1\nRefractionAngle 20\n") +
+                              "Box\n{\nMaterial glass\nScale 100 100 0.2\n}\n" + halfPlaneLamp(-0.4);
     const RenderedImage image = renderSceneText(scene, {.passes = 72});
     ASSERT_EQ(image.pixels.size(), size_t(w * h));
     const double halfAngle = 10.0 * M_PI / 180.0, t = std::tan(1.0 * M_PI / 180.0) * double(w) / double(h);
@@ -285,13 +270,9 @@ double unitSphere(const D3& o, const D3& d, bool far) {
 TEST(DispersionRender, EachChannelOfABallLensFollowsItsOwnIndex) {
     const int w = 64, h = 64;
     const double n = 1.5, dispersion = 4, wallZ = -3;
-    const std::string scene =
-        "SceneSettings\n{\nRenderWidth 64\nRenderHeight 64\nReflectionQuality 0\nIndirectQuality 0\n}\n"
-        "Camera\n{\nPOV 0.3 0 6\nPOI 0.3 0 0\nFOV 24\n}\n"
-        "Material\n{\nName glass\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nOpacity 0\nRefractionIndex 1.5\n"
-        "Dispersion 4\n}\n"
-        "Sphere\n{\nMaterial glass\nCenter 0 0 0\nRadius 1\n}\n" +
-        halfPlaneLamp(-3);
+    const std::string scene = settingsText(w, h, 0, 0) + cameraText("0.3 0 6", "0.3 0 0", "24") +
+                              blackMaterialText("glass", "Opacity 0\nRefractionIndex 1.5\nDispersion 4\n") +
+                              "Sphere\n{\nMaterial glass\nCenter 0 0 0\nRadius 1\n}\n" + halfPlaneLamp(-3);
     const RenderedImage image = renderSceneText(scene, {.passes = 3});
     ASSERT_EQ(image.pixels.size(), size_t(w * h));
     const double t = std::tan(12.0 * M_PI / 180.0);

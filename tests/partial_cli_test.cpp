@@ -3,8 +3,7 @@
 // rendered; a merge that cannot be made writes nothing.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -18,17 +17,6 @@ namespace trazo::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliRun {
-    int status = -1;
-    std::string errors;
-};
-
-CliRun trazo(const std::string& arguments) {
-    const std::string errFile = tempPath("partial_stderr.txt");
-    const int raw = std::system((trazoBinary() + " " + arguments + " 2>" + errFile + " >/dev/null").c_str());
-    return CliRun{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readFileText(errFile)};
-}
 
 const std::string kSeed =
     "--render " + sourcePath("scenes/scene1_area.scene") + " --width 64 --height 48 --backend cpu --quiet";
@@ -53,24 +41,24 @@ std::vector<AccumPixel> readAccum(const std::string& path, PartialHeader& header
 TEST(PartialCli, FourProcessesMergeToOneProcessOfTheSamePasses) {
     const std::string dir = freshDir("four_parts");
     // --passes 0:N -o is --spp N's image, bit for bit.
-    CliRun r = trazo(kSeed + " --passes 0:16 -o " + dir + "/single.pfm");
+    CommandResult r = runTrazo(kSeed + " --passes 0:16 -o " + dir + "/single.pfm");
     ASSERT_EQ(r.status, 0) << r.errors;
-    r = trazo(kSeed + " --spp 16 -o " + dir + "/spp.pfm");
+    r = runTrazo(kSeed + " --spp 16 -o " + dir + "/spp.pfm");
     ASSERT_EQ(r.status, 0) << r.errors;
     EXPECT_EQ(readFileText(dir + "/single.pfm"), readFileText(dir + "/spp.pfm"));
-    r = trazo(kSeed + " --passes 0:16 --partial " + dir + "/whole.part");
+    r = runTrazo(kSeed + " --passes 0:16 --partial " + dir + "/whole.part");
     ASSERT_EQ(r.status, 0) << r.errors;
 
     const std::vector<std::string> ranges{"0:3", "3:8", "8:9", "9:16"};
     std::string parts;
     for (auto it = ranges.rbegin(); it != ranges.rend(); ++it) {  // listed to merge in reverse
         const std::string part = dir + "/p" + it->substr(0, it->find(':')) + ".part";
-        r = trazo(kSeed + " --passes " + *it + " --partial " + part);
+        r = runTrazo(kSeed + " --passes " + *it + " --partial " + part);
         ASSERT_EQ(r.status, 0) << r.errors;
         parts += " " + part;
     }
     EXPECT_EQ(listDir(dir).size(), 7u) << "a partial render writes no image";
-    r = trazo("merge" + parts + " -o " + dir + "/merged.pfm --partial " + dir + "/merged.part --stats " + dir +
+    r = runTrazo("merge" + parts + " -o " + dir + "/merged.pfm --partial " + dir + "/merged.part --stats " + dir +
               "/merged.json");
     ASSERT_EQ(r.status, 0) << r.errors;
     EXPECT_NE(r.errors.find("trazo: merge: estimated relative error "), std::string::npos) << r.errors;
@@ -108,14 +96,14 @@ TEST(PartialCli, UsageErrors) {
                                     kSeed + " --partial " + part + " --target-error 0.1",
                                     kSeed + " --devices 0", kSeed + " --backend cuda --devices 0,0",
                                     std::string("merge ") + part})
-        EXPECT_EQ(trazo(args).status, 2) << args;
+        EXPECT_EQ(runTrazo(args).status, 2) << args;
     EXPECT_FALSE(fs::exists(part));
 }
 
 TEST(PartialCli, TimeLimitWritesThePassesRendered) {
     const std::string part = tempPath("timed.part");
     fs::remove(part);
-    const CliRun r = trazo(kSeed + " --passes 8:100000 --time 1 --partial " + part);
+    const CommandResult r = runTrazo(kSeed + " --passes 8:100000 --time 1 --partial " + part);
     ASSERT_EQ(r.status, 0) << r.errors;
     PartialHeader h;
     const std::vector<AccumPixel> accum = readAccum(part, h);
@@ -128,7 +116,7 @@ TEST(PartialCli, TimeLimitWritesThePassesRendered) {
     EXPECT_NE(r.errors.find("trazo: stopped by --time after passes " + formatRange(h.passes[0]) + " of 8:100000"),
               std::string::npos) << r.errors;
     // The merge names what the time limit left out.
-    const CliRun m = trazo("merge --allow-gaps " + part + " -o " + tempPath("timed.pfm"));
+    const CommandResult m = runTrazo("merge --allow-gaps " + part + " -o " + tempPath("timed.pfm"));
     EXPECT_EQ(m.status, 0) << m.errors;
     EXPECT_NE(m.errors.find("passes 0:8 are missing"), std::string::npos) << m.errors;
     EXPECT_NE(m.errors.find("passes " + std::to_string(h.passes[0].end) + ":100000 are missing"), std::string::npos)
@@ -154,30 +142,30 @@ TEST(PartialCli, SigtermFinishesTheBatchAndWritesThePassesRendered) {
 
 TEST(PartialCli, MergeRefusalsWriteNothing) {
     const std::string dir = freshDir("merge_refusals");
-    ASSERT_EQ(trazo(kSeed + " --passes 0:2 --partial " + dir + "/a.part").status, 0);
-    ASSERT_EQ(trazo(kSeed + " --passes 4:6 --partial " + dir + "/b.part").status, 0);
-    ASSERT_EQ(trazo(kSeed + " --passes 2:4 --seed 9 --partial " + dir + "/c.part").status, 0);
+    ASSERT_EQ(runTrazo(kSeed + " --passes 0:2 --partial " + dir + "/a.part").status, 0);
+    ASSERT_EQ(runTrazo(kSeed + " --passes 4:6 --partial " + dir + "/b.part").status, 0);
+    ASSERT_EQ(runTrazo(kSeed + " --passes 2:4 --seed 9 --partial " + dir + "/c.part").status, 0);
     const std::string out = " -o " + dir + "/out.png --stats " + dir + "/out.json --partial " + dir + "/out.part";
 
-    CliRun r = trazo("merge " + dir + "/a.part " + dir + "/b.part" + out);
+    CommandResult r = runTrazo("merge " + dir + "/a.part " + dir + "/b.part" + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.errors.find("trazo: merge: passes 2:4 are missing"), std::string::npos) << r.errors;
 
-    r = trazo("merge " + dir + "/a.part " + dir + "/b.part " + dir + "/c.part" + out);
+    r = runTrazo("merge " + dir + "/a.part " + dir + "/b.part " + dir + "/c.part" + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.errors.find(dir + "/c.part: cannot be merged with " + dir + "/a.part: they differ in seed (0 vs 9)"),
               std::string::npos) << r.errors;
 
     std::string bytes = readFileText(dir + "/b.part");
     std::ofstream(dir + "/b.part", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
-    r = trazo("merge --allow-gaps " + dir + "/a.part " + dir + "/b.part" + out);
+    r = runTrazo("merge --allow-gaps " + dir + "/a.part " + dir + "/b.part" + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.errors.find(dir + "/b.part: truncated: " + std::to_string(bytes.size() / 2) + " bytes of " +
                             std::to_string(bytes.size())),
               std::string::npos) << r.errors;
     EXPECT_EQ(listDir(dir), (std::vector<std::string>{"a.part", "b.part", "c.part"}));
 
-    r = trazo("merge " + dir + "/a.part" + out);  // a merge that can be made writes all three
+    r = runTrazo("merge " + dir + "/a.part" + out);  // a merge that can be made writes all three
     EXPECT_EQ(r.status, 0) << r.errors;
     EXPECT_EQ(listDir(dir).size(), 6u);
 }

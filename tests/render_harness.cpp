@@ -88,4 +88,24 @@ double rmse(const RenderedImage& a, const RenderedImage& b) {
     return std::sqrt(sum / (3.0 * a.pixels.size()));
 }
 
+std::string settingsText(int width, int height, int reflectionQuality, int indirectQuality, const std::string& more) {
+    return "SceneSettings\n{\nRenderWidth " + std::to_string(width) + "\nRenderHeight " + std::to_string(height) +
+           "\nReflectionQuality " + std::to_string(reflectionQuality) + "\nIndirectQuality " +
+           std::to_string(indirectQuality) + "\n" + more + "}\n";
+}
+
+std::string cameraText(const std::string& pov, const std::string& poi, const std::string& fov) {
+    return "Camera\n{\nPOV " + pov + "\nPOI " + poi + "\nFOV " + fov + "\n}\n";
+}
+
+std::string blackMaterialText(const std::string& name, const std::string& lines) {
+    return "Material\n{\nName " + name + "\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\n" + lines + "}\n";
+}
+
+std::string glassSlabBeforeWallText(const std::string& glass, const std::string& thickness, const std::string& wallZ) {
+    return blackMaterialText("glass", glass) + blackMaterialText("wall", "EmissiveColor 1 1 1\n") +
+           "Box\n{\nMaterial glass\nScale 100 100 " + thickness + "\n}\n" + "Box\n{\nMaterial wall\nTranslation 0 0 " +
+           wallZ + "\nScale 1000 1000 1\n}\n";
+}
+
 }  // namespace trazo::test

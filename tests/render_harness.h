@@ -49,4 +49,14 @@ void translateScene(Scene& scene, Vec3 delta);
 // Root-mean-square difference over all channels.
 double rmse(const RenderedImage& a, const RenderedImage& b);
 
+// Scene text block by block (SPEC §3), a parameter a line, for the scenes the suites write.
+std::string settingsText(int width, int height, int reflectionQuality, int indirectQuality,
+                         const std::string& more = "");  // more: further lines of the block
+std::string cameraText(const std::string& pov, const std::string& poi, const std::string& fov);
+// A material with no diffuse or specular colour (Kd = Ks = 0): glass, a lamp. `lines`: its other parameters.
+std::string blackMaterialText(const std::string& name, const std::string& lines);
+// A slab of black material `glass` (its lines after Kd and Ks), 100 × 100 × `thickness` about the origin, before a
+// wall that only emits (Ke = 1), 1000 × 1000 × 1 about z = wallZ.
+std::string glassSlabBeforeWallText(const std::string& glass, const std::string& thickness, const std::string& wallZ);
+
 }  // namespace trazo::test

@@ -108,8 +108,7 @@ TEST(RenderRobustness, SameImageAtEveryScale) {
 TEST(RenderRefraction, TiltedSlabFollowsSnellsLaw) {
     const double angle = 0.5, n = 1.5;
     const std::string scene =
-        "SceneSettings\n{\nRenderWidth 24\nRenderHeight 24\nReflectionQuality 0\nIndirectQuality 0\n}\n"
-        "Camera\n{\nPOV 0 0 10\nPOI 0 0 0\nFOV 16\n}\n"
+        settingsText(24, 24, 0, 0) + cameraText("0 0 10", "0 0 0", "16") +
         "Material\n{\nName wall\nDiffuseColor 1 1 1\nSpecularColor 0 0 0\nRoughness 0\n}\n"
         "Material\n{\nName glass\nDiffuseColor 1 1 1\nSpecularColor 0 0 0\nOpacity 0\nRefractionIndex 1.5\n}\n"
         "Box\n{\nMaterial wall\nScale 100 100 1\nTranslation 0 0 -5.5\n}\n"

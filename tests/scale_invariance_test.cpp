@@ -73,14 +73,8 @@ TEST(ScaleInvarianceRender, SubsurfaceSlabKeepsItsReflectanceAtEveryDistanceAndP
 // SPEC §6's Fresnel check through a pane 0.01 thick seen head-on from 1 000 away: (1 − F)/(1 + F) = 0.96/1.04
 // of the emitter behind it comes through, as at any distance; stepping over the pane's back face reads 0.96.
 TEST(ScaleInvarianceRender, ThinPaneFromFarAwayTransmitsOneMinusFOverOnePlusF) {
-    const std::string scene =
-        "SceneSettings\n{\nRenderWidth 32\nRenderHeight 32\nReflectionQuality 1\nIndirectQuality 0\n}\n"
-        "Camera\n{\nPOV 0 0 1000\nPOI 0 0 0\nFOV 0.05\n}\n"
-        "Material\n{\nName glass\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nOpacity 0\nRefractionIndex 1.5\n"
-        "Fresnel 1\n}\n"
-        "Material\n{\nName wall\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nEmissiveColor 1 1 1\n}\n"
-        "Box\n{\nMaterial glass\nScale 100 100 0.01\n}\n"
-        "Box\n{\nMaterial wall\nTranslation 0 0 -5\nScale 1000 1000 1\n}\n";
+    const std::string scene = settingsText(32, 32, 1, 0) + cameraText("0 0 1000", "0 0 0", "0.05") +
+                              glassSlabBeforeWallText("Opacity 0\nRefractionIndex 1.5\nFresnel 1\n", "0.01", "-5");
     const RenderedImage image = renderSceneText(scene, {.passes = 64});
     ASSERT_FALSE(image.pixels.empty());
     EXPECT_NEAR(meanOf(image, 1).mean, 0.96 / 1.04, 4 * 7.3e-4);

@@ -3,6 +3,7 @@
 // (an area light over a wall, the indirect furnace) and against each other where grids nest.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -140,19 +141,27 @@ double zScore(const std::vector<double>& x) {
     return mean / se;
 }
 
+// The errors from exact[i] at each pixel i of `scene` rendered for `passes` in `blocks`, seeds 1 .. seeds.
+std::vector<double> pixelErrors(const std::string& scene, uint32_t passes, const StrataBlocks& blocks, uint32_t seeds,
+                                const std::vector<double>& exact) {
+    std::vector<double> errors;
+    for (uint32_t seed = 1; seed <= seeds; ++seed) {
+        const RenderedImage image = renderSceneText(scene, {.passes = passes, .seed = seed, .blocks = blocks});
+        EXPECT_EQ(image.pixels.size(), exact.size());
+        for (size_t i = 0; i < std::min(image.pixels.size(), exact.size()); ++i)
+            errors.push_back(image.pixels[i].x - exact[i]);
+    }
+    return errors;
+}
+
 // One cycle at block sizes 1, 2, 4 and the whole light are unbiased estimates of the exact image: over 144
 // pixels × 12 seeds, the mean error is within 4 standard errors of 0. The standard error is ~1e-4 of the
 // pixel value, so a block that skipped or doubled one of the 8 cells (a 1/8 bias) would fail by far.
 TEST(StrataBlocks, EveryBlockSizeMatchesTheClosedForm) {
     const std::vector<double> exact = wallClosedForm();
     for (uint32_t target : {1u, 2u, 4u, kWholeGrid}) {
-        std::vector<double> errors;
-        for (uint32_t seed = 1; seed <= 12; ++seed) {
-            const RenderedImage image = renderSceneText(
-                wallUnderAreaLight(), {.passes = blockPasses(8, target), .seed = seed, .blocks = StrataBlocks{1, target, 1, 1}});
-            ASSERT_EQ(image.pixels.size(), exact.size());
-            for (size_t i = 0; i < exact.size(); ++i) errors.push_back(image.pixels[i].x - exact[i]);
-        }
+        const std::vector<double> errors =
+            pixelErrors(wallUnderAreaLight(), blockPasses(8, target), StrataBlocks{1, target, 1, 1}, 12, exact);
         EXPECT_LT(std::abs(zScore(errors)), 4.0) << "target " << target;
     }
 }
@@ -161,22 +170,15 @@ TEST(StrataBlocks, EveryBlockSizeMatchesTheClosedForm) {
 // One cycle of the 18 directions (q = 3) in blocks of 1, 2, 6 and 18 is unbiased.
 TEST(StrataBlocks, IndirectBlocksMatchTheClosedForm) {
     const std::string scene =
-        "SceneSettings\n{\nRenderWidth 12\nRenderHeight 8\nReflectionQuality 0\nIndirectQuality 3\n"
-        "ColorBleeding 1\n}\n"
-        "Camera\n{\nPOV 0 0 10\nPOI 0 0 0\nFOV 30\n}\n"
-        "Material\n{\nName wall\nDiffuseColor 0.5 0.5 0.5\nSpecularColor 0 0 0\nRoughness 0\n}\n"
-        "Material\n{\nName sky\nDiffuseColor 0 0 0\nSpecularColor 0 0 0\nEmissiveColor 1 1 1\n}\n"
+        settingsText(12, 8, 0, 3, "ColorBleeding 1\n") + cameraText("0 0 10", "0 0 0", "30") +
+        "Material\n{\nName wall\nDiffuseColor 0.5 0.5 0.5\nSpecularColor 0 0 0\nRoughness 0\n}\n" +
+        blackMaterialText("sky", "EmissiveColor 1 1 1\n") +
         "Box\n{\nMaterial wall\nTranslation 0 0 -0.5\nScale 100 100 1\n}\n"
         "Sphere\n{\nMaterial sky\nCenter 0 0 0\nRadius 500\n}\n";
-    const double exact = 0.5 * 2.0 / M_PI;
+    const std::vector<double> exact(12 * 8, 0.5 * 2.0 / M_PI);
     for (uint32_t target : {1u, 2u, 6u, kWholeGrid}) {
-        std::vector<double> errors;
-        for (uint32_t seed = 1; seed <= 6; ++seed) {
-            const RenderedImage image = renderSceneText(
-                scene, {.passes = blockPasses(18, target), .seed = seed, .blocks = StrataBlocks{1, 1, target, 1}});
-            ASSERT_FALSE(image.pixels.empty());
-            for (const Vec3& p : image.pixels) errors.push_back(p.x - exact);
-        }
+        const std::vector<double> errors =
+            pixelErrors(scene, blockPasses(18, target), StrataBlocks{1, 1, target, 1}, 6, exact);
         EXPECT_LT(std::abs(zScore(errors)), 4.0) << "target " << target;
     }
 }
@@ -186,9 +188,7 @@ TEST(StrataBlocks, IndirectBlocksMatchTheClosedForm) {
 // is centred on 0.
 TEST(StrataBlocks, NestedGridsAgreeAcrossBlockSizes) {
     const std::string scene =
-        "SceneSettings\n{\nRenderWidth 10\nRenderHeight 10\nReflectionQuality 0\nIndirectQuality 2\n"
-        "ColorBleeding 4\n}\n"
-        "Camera\n{\nPOV 0 1 4\nPOI 0 0 0\nFOV 50\n}\n"
+        settingsText(10, 10, 0, 2, "ColorBleeding 4\n") + cameraText("0 1 4", "0 0 0", "50") +
         "Material\n{\nName m\nDiffuseColor 0.8 0.8 0.8\nSpecularColor 0 0 0\nRoughness 0.5\n}\n"
         "Box\n{\nMaterial m\nTranslation 0 -0.5 0\nScale 6 1 6\n}\n"
         "Box\n{\nMaterial m\nTranslation 0 0.5 -1.5\nScale 3 2 0.2\n}\n"

@@ -1,11 +1,14 @@
-// Paths for the tests: the source tree, the CLI binary and a per-process scratch folder.
+// Paths for the tests: the source tree, the CLI binary (and running it) and a per-process scratch folder.
 #include "test_paths.h"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 namespace trazo::test {
 
@@ -27,6 +30,12 @@ std::string readFileText(const std::string& path) {
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
+}
+
+std::string writeTempFile(const std::string& name, const std::string& bytes) {
+    const std::string path = tempPath(name);
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
 }
 
 std::string freshDir(const std::string& name) {
@@ -51,5 +60,13 @@ std::vector<std::string> shippedSceneFiles() {
     std::sort(names.begin(), names.end());
     return names;
 }
+
+CommandResult runCommand(const std::string& command) {
+    const std::string errFile = tempPath("command_stderr.txt");
+    const int raw = std::system((command + " 2>'" + errFile + "' >/dev/null </dev/null").c_str());
+    return CommandResult{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readFileText(errFile)};
+}
+
+CommandResult runTrazo(const std::string& arguments) { return runCommand(trazoBinary() + " " + arguments); }
 
 }  // namespace trazo::test

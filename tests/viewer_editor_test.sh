@@ -283,16 +283,7 @@ for _ in $(seq 50); do [ -f "$recovery" ] || break; sleep 0.1; done
 case "$(xdotool getwindowname "$wid")" in *" *") fail "the title still marks unsaved edits after the undo" ;; esac
 echo "ok: unsaved edits mark the title, keep a recovery file and make Ctrl+Q ask; undone, neither"
 
-key ctrl+q
-for _ in $(seq 100); do
-    kill -0 "$pid" 2>/dev/null || break
-    sleep 0.1
-done
-kill -0 "$pid" 2>/dev/null && fail "Ctrl+Q did not close the viewer within 10 s"
-wait "$pid"
-status=$?
-pid=
-[ $status -eq 0 ] || fail "the viewer exited with $status"
+xvfb_viewer_quit
 ls "$work"/*.recovery >/dev/null 2>&1 && fail "a recovery file was left after a clean quit"
 echo "ok: Ctrl+Q closed the viewer, no recovery file left"
 grep "^trazo: viewer " "$work/viewer.log"

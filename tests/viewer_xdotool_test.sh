@@ -75,15 +75,6 @@ grep -q "^trazo: saved scene $edited\$" "$work/viewer.log" || fail "no 'saved sc
     fail "the scene Ctrl+S wrote does not render"
 echo "ok: Ctrl+S wrote the edited scene and it renders"
 
-xdotool key --clearmodifiers ctrl+q 2>/dev/null
-for _ in $(seq 100); do
-    kill -0 "$pid" 2>/dev/null || break
-    sleep 0.1
-done
-kill -0 "$pid" 2>/dev/null && fail "Ctrl+Q did not close the viewer within 10 s"
-wait "$pid"
-status=$?
-pid=
-[ $status -eq 0 ] || fail "the viewer exited with $status"
+xvfb_viewer_quit
 echo "ok: Ctrl+Q closed the viewer"
 cat "$work/viewer.log"

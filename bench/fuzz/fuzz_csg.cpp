@@ -14,21 +14,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     Diagnostics diags;
     std::shared_ptr<const CsgTree> tree = readCsgText(text, fuzz::sceneRoot() + "/fuzz.csg", diags);
-    if (!tree) {
-        if (!diags.hasErrors()) fuzz::fail("readCsgText returned no tree and reported no error");
-        return 0;
-    }
-    if (diags.hasErrors()) fuzz::fail("readCsgText returned a tree and reported an error");
+    if (!fuzz::keptReadContract(tree != nullptr, diags, "readCsgText", "a tree")) return 0;
     if (tree->nodes.empty() || tree->nodes.size() > size_t(kMaxCsgNodes) || tree->root < 0 ||
         size_t(tree->root) >= tree->nodes.size())
         fuzz::fail("readCsgText returned a tree without a valid root or over kMaxCsgNodes nodes");
 
-    Scene scene = fuzz::stageScene();
     Csg csg;
-    csg.material = 0;
     csg.source = fuzz::sceneRoot() + "/fuzz.csg";
     csg.tree = tree;
-    scene.csgs.push_back(csg);
-    fuzz::renderTiny(scene);
+    fuzz::renderTinyWith(fuzz::stageScene(), &Scene::csgs, csg);
     return 0;
 }

@@ -15,20 +15,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     Diagnostics diags;
     std::shared_ptr<const MeshData> mesh = readObjText(text, fuzz::sceneRoot() + "/fuzz.obj", diags);
-    if (!mesh) {
-        if (!diags.hasErrors()) fuzz::fail("readObjText returned no mesh and reported no error");
-        return 0;
-    }
-    if (diags.hasErrors()) fuzz::fail("readObjText returned a mesh and reported an error");
+    if (!fuzz::keptReadContract(mesh != nullptr, diags, "readObjText", "a mesh")) return 0;
     const std::string broken = objMeshContractViolation(*mesh);
     if (!broken.empty()) fuzz::fail("readObjText returned a mesh that breaks the OBJ mesh contract: " + broken);
 
-    Scene scene = fuzz::stageScene();
     Mesh object;
-    object.material = 0;
     object.source = fuzz::sceneRoot() + "/fuzz.obj";
     object.data = mesh;
-    scene.meshes.push_back(object);
-    fuzz::renderTiny(scene);
+    fuzz::renderTinyWith(fuzz::stageScene(), &Scene::meshes, object);
     return 0;
 }

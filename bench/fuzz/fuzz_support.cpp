@@ -71,6 +71,12 @@ void writeFileOrDie(const std::string& path, const uint8_t* data, size_t size) {
     if (std::fclose(f) != 0 || !ok) fail("cannot write " + path);
 }
 
+bool keptReadContract(bool read, const Diagnostics& diags, const std::string& reader, const std::string& what) {
+    if (!read && !diags.hasErrors()) fail(reader + " returned nothing and reported no error");
+    if (read && diags.hasErrors()) fail(reader + " returned " + what + " and reported an error");
+    return read;
+}
+
 Scene stageScene() {
     Scene scene;
     scene.path = sceneRoot() + "/stage.scene";

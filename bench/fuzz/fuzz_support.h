@@ -5,10 +5,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
-namespace trazo {
-struct Scene;
-}
+#include "scene/diagnostic.h"
+#include "scene/scene.h"
 
 namespace trazo::fuzz {
 
@@ -32,6 +33,18 @@ void renderTiny(const Scene& scene);
 
 // A scene around one object: a camera looking at the origin, a point light, an area light, one material.
 Scene stageScene();
+
+// renderTiny of `scene` with `object`, in material 0 (the stage's), added to its kind's array.
+template <class Object>
+void renderTinyWith(Scene scene, std::vector<Object> Scene::*array, Object object) {
+    object.material = 0;
+    (scene.*array).push_back(std::move(object));
+    renderTiny(scene);
+}
+
+// A reader's contract: `what` (read is true) and no error, or nothing and an error. Dies where it is broken;
+// returns `read`.
+bool keptReadContract(bool read, const Diagnostics& diags, const std::string& reader, const std::string& what);
 
 // Dies (abort, so libFuzzer and the replay driver record the input) with `what` on stderr.
 [[noreturn]] void fail(const std::string& what);

@@ -21,10 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     Diagnostics diags;
     const SourceLocation where{"fuzz.scene", 1, 0};
     std::shared_ptr<const TextureImage> image = readTextureImage(path, where, diags);
-    if (!image) {
-        if (!diags.hasErrors()) fuzz::fail("readTextureImage returned no image and reported no error");
-        return 0;
-    }
+    if (!fuzz::keptReadContract(image != nullptr, diags, "readTextureImage", "an image")) return 0;
     if (image->width <= 0 || image->height <= 0 ||
         uint64_t(image->width) * uint64_t(image->height) > kMaxTextureTexels ||
         image->texels.size() != size_t(image->width) * size_t(image->height))
@@ -45,10 +42,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     quad->corners = {{0, 0, 0}, {1, 0, 1}, {2, 0, 2}, {0, 0, 0}, {2, 0, 2}, {3, 0, 3}};
     quad->hasNormals = quad->hasUvs = true;
     Mesh mesh;
-    mesh.material = 0;
     mesh.source = fuzz::sceneRoot() + "/quad.obj";
     mesh.data = quad;
-    scene.meshes.push_back(mesh);
-    fuzz::renderTiny(scene);
+    fuzz::renderTinyWith(std::move(scene), &Scene::meshes, mesh);
     return 0;
 }

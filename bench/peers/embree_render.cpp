@@ -73,15 +73,6 @@ bool parseOptions(int argc, char** argv, Options& o) {
     return !o.scene.empty();
 }
 
-// SPEC §3's rectangle axes: u = normalize(a × n), a = +Y (+Z within 0.1° of ±Y), v = n × u, rolled about n.
-void areaLightAxes(Vec3 normal, float roll, Vec3& u, Vec3& v) {
-    const Vec3 n = trazo::normalize(normal);
-    const Vec3 a = std::fabs(n.y) > std::cos(0.1f * 3.14159265f / 180.0f) ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
-    const Vec3 u0 = trazo::normalize(trazo::cross(a, n)), v0 = trazo::cross(n, u0);
-    u = u0 * std::cos(roll) + v0 * std::sin(roll);
-    v = v0 * std::cos(roll) - u0 * std::sin(roll);
-}
-
 Vec3 kdOf(const trazo::Scene& scene, int32_t material) {
     return material == trazo::kDefaultMaterial ? trazo::Material{}.diffuseColor : scene.materials[material].diffuseColor;
 }

@@ -257,11 +257,6 @@ TEST(BvhBuild, StructureIsValidOnVariedMeshes) {
     }
 }
 
-struct EightWide {
-    std::vector<WideBvhNode8> nodes;
-    std::vector<uint32_t> leaves;
-};
-
 WideBvhNode8 emptyNode8() {
     WideBvhNode8 node{};
     for (int lane = 0; lane < kBvh8Width; ++lane) {
@@ -269,6 +264,30 @@ WideBvhNode8 emptyNode8() {
         node.child[lane] = kBvhEmptyLane;
     }
     return node;
+}
+
+struct EightWide {
+    std::vector<WideBvhNode8> nodes;
+    std::vector<uint32_t> leaves;
+
+    uint32_t addNode() {  // a lane's reference to a new, empty node
+        nodes.push_back(emptyNode8());
+        return uint32_t(nodes.size() - 1);
+    }
+    uint32_t addRun(const std::vector<uint32_t>& run) {  // a lane's reference to `run` of leaves, appended to leaves
+        const uint32_t ref = bvhLeafRef(uint32_t(leaves.size()), uint32_t(run.size()));
+        leaves.insert(leaves.end(), run.begin(), run.end());
+        return ref;
+    }
+};
+
+// The leaves under binary node i as references, left to right.
+std::vector<uint32_t> leavesUnder(const std::vector<BvhNode>& in, uint32_t i) {
+    if (in[i].primCount > 0) return {bvhLeafRef(in[i].firstOrChild, in[i].primCount)};
+    std::vector<uint32_t> out = leavesUnder(in, in[i].firstOrChild);
+    const std::vector<uint32_t> right = leavesUnder(in, in[i].firstOrChild + 1);
+    out.insert(out.end(), right.begin(), right.end());
+    return out;
 }
 
 // Gives `node` the binary nodes `lanes` with their references, and queues the interior ones as (binary node,
@@ -285,6 +304,24 @@ void setBinaryLanes(const std::vector<BvhNode>& in, const std::vector<uint32_t>&
     }
     for (size_t i = lanes.size(); i-- > 0;)
         if (!bvhIsLeaf(refs[i])) pending.push_back({lanes[i], refs[i]});
+}
+
+// An eight-wide tree made top down from binary node 0: each node's lanes the binary nodes lanesOf(binary) gives,
+// each lane's reference refOf(lane, tree) (a new node, a run of leaves or a leaf).
+template <class LanesOf, class RefOf>
+EightWide topDown(const std::vector<BvhNode>& in, LanesOf lanesOf, RefOf refOf) {
+    EightWide tree;
+    tree.addNode();
+    std::vector<std::pair<uint32_t, uint32_t>> pending{{0u, 0u}};  // (binary node, eight-wide node)
+    while (!pending.empty()) {
+        const auto [binary, at] = pending.back();
+        pending.pop_back();
+        const std::vector<uint32_t> lanes = lanesOf(binary);
+        std::vector<uint32_t> refs;
+        for (uint32_t lane : lanes) refs.push_back(refOf(lane, tree));
+        setBinaryLanes(in, lanes, refs, tree.nodes[at], pending);
+    }
+    return tree;
 }
 
 // The cost widenBvh minimises, of an eight-wide tree whose leaf lanes name triangles (runs off) or runs of leaves in
@@ -356,16 +393,8 @@ EightWide widenBinary(const Bvh& bvh, bool runs, uint32_t group) {
         }
     };
     weigh(0, weigh);
-    auto leavesUnder = [&](uint32_t i, auto&& self, std::vector<uint32_t>& out) -> void {
-        if (isLeaf(i)) {
-            out.push_back(bvhLeafRef(in[i].firstOrChild, in[i].primCount));
-            return;
-        }
-        self(in[i].firstOrChild, self, out);
-        self(in[i].firstOrChild + 1, self, out);
-    };
     // The binary nodes that take the lanes of binary node i given j of them, left to right.
-    auto lanesOf = [&](uint32_t i, int j, auto&& self, std::vector<uint32_t>& out) -> void {
+    auto lanesUnder = [&](uint32_t i, int j, auto&& self, std::vector<uint32_t>& out) -> void {
         while (j > 1 && (isLeaf(i) || w[i].how[j - 1] == 0)) --j;
         if (j == 1) {
             out.push_back(i);
@@ -374,36 +403,18 @@ EightWide widenBinary(const Bvh& bvh, bool runs, uint32_t group) {
         self(in[i].firstOrChild, w[i].how[j - 1], self, out);
         self(in[i].firstOrChild + 1, j - w[i].how[j - 1], self, out);
     };
-    EightWide made;
-    made.nodes.push_back(emptyNode8());
-    std::vector<std::pair<uint32_t, uint32_t>> pending{{0u, 0u}};  // (binary node, eight-wide node)
-    while (!pending.empty()) {
-        const auto [binary, at] = pending.back();
-        pending.pop_back();
+    auto lanesOf = [&](uint32_t binary) {
         std::vector<uint32_t> lanes;
-        if (isLeaf(binary)) {
-            lanes = {binary};
-        } else {
-            lanesOf(in[binary].firstOrChild, w[binary].open, lanesOf, lanes);
-            lanesOf(in[binary].firstOrChild + 1, kBvh8Width - w[binary].open, lanesOf, lanes);
-        }
-        std::vector<uint32_t> refs;
-        for (uint32_t lane : lanes) {
-            if (!isLeaf(lane) && w[lane].how[0] == 1) {
-                refs.push_back((uint32_t)made.nodes.size());
-                made.nodes.push_back(emptyNode8());
-            } else if (runs) {
-                std::vector<uint32_t> under;
-                leavesUnder(lane, leavesUnder, under);
-                refs.push_back(bvhLeafRef((uint32_t)made.leaves.size(), (uint32_t)under.size()));
-                made.leaves.insert(made.leaves.end(), under.begin(), under.end());
-            } else {
-                refs.push_back(bvhLeafRef(in[lane].firstOrChild, in[lane].primCount));
-            }
-        }
-        setBinaryLanes(in, lanes, refs, made.nodes[at], pending);
-    }
-    return made;
+        if (isLeaf(binary)) return std::vector<uint32_t>{binary};
+        lanesUnder(in[binary].firstOrChild, w[binary].open, lanesUnder, lanes);
+        lanesUnder(in[binary].firstOrChild + 1, kBvh8Width - w[binary].open, lanesUnder, lanes);
+        return lanes;
+    };
+    return topDown(in, lanesOf, [&](uint32_t lane, EightWide& tree) {
+        if (!isLeaf(lane) && w[lane].how[0] == 1) return tree.addNode();
+        if (runs) return tree.addRun(leavesUnder(in, lane));
+        return bvhLeafRef(in[lane].firstOrChild, in[lane].primCount);
+    });
 }
 
 // An eight-wide tree of the binary tree made greedily, as Embree's builders and widenBvh once did: each node takes
@@ -412,22 +423,8 @@ EightWide widenBinary(const Bvh& bvh, bool runs, uint32_t group) {
 EightWide greedyWideTree(const Bvh& bvh, bool runs, uint32_t group) {
     const std::vector<BvhNode>& in = bvh.nodes;
     auto isLeaf = [&](uint32_t i) { return in[i].primCount > 0; };
-    auto leafRef = [&](uint32_t i) { return bvhLeafRef(in[i].firstOrChild, in[i].primCount); };
-    auto leavesUnder = [&](uint32_t i, auto&& self, std::vector<uint32_t>& out) -> void {
-        if (isLeaf(i)) {
-            out.push_back(leafRef(i));
-            return;
-        }
-        self(in[i].firstOrChild, self, out);
-        self(in[i].firstOrChild + 1, self, out);
-    };
     auto area = [&](uint32_t i) { return Aabb{in[i].boundsMin, in[i].boundsMax}.surfaceArea(); };
-    EightWide w;
-    w.nodes.push_back(emptyNode8());
-    std::vector<std::pair<uint32_t, uint32_t>> pending{{0u, 0u}};  // (binary node, eight-wide node)
-    while (!pending.empty()) {
-        const auto [binary, made] = pending.back();
-        pending.pop_back();
+    auto lanesOf = [&](uint32_t binary) {
         std::vector<uint32_t> lanes;
         if (isLeaf(binary)) lanes = {binary};
         else lanes = {in[binary].firstOrChild, in[binary].firstOrChild + 1};
@@ -442,23 +439,14 @@ EightWide greedyWideTree(const Bvh& bvh, bool runs, uint32_t group) {
             lanes[widest] = left;
             lanes.push_back(left + 1);
         }
-        std::vector<uint32_t> refs;
-        for (uint32_t lane : lanes) {
-            std::vector<uint32_t> under;
-            leavesUnder(lane, leavesUnder, under);
-            if (runs && (isLeaf(lane) || under.size() <= group)) {
-                refs.push_back(bvhLeafRef((uint32_t)w.leaves.size(), (uint32_t)under.size()));
-                w.leaves.insert(w.leaves.end(), under.begin(), under.end());
-            } else if (isLeaf(lane)) {
-                refs.push_back(leafRef(lane));
-            } else {
-                refs.push_back((uint32_t)w.nodes.size());
-                w.nodes.push_back(emptyNode8());
-            }
-        }
-        setBinaryLanes(in, lanes, refs, w.nodes[made], pending);
-    }
-    return w;
+        return lanes;
+    };
+    return topDown(in, lanesOf, [&](uint32_t lane, EightWide& tree) {
+        const std::vector<uint32_t> under = leavesUnder(in, lane);
+        if (runs && (isLeaf(lane) || under.size() <= group)) return tree.addRun(under);
+        if (isLeaf(lane)) return bvhLeafRef(in[lane].firstOrChild, in[lane].primCount);
+        return tree.addNode();
+    });
 }
 
 // widenBvh regroups each four-wide node's lanes into the binary nodes they were opened from (WideBvhNode::opened),
@@ -596,31 +584,28 @@ void expectSameTree(const Bvh& one, const Bvh& many) {
     EXPECT_EQ(one.primitiveOrder, many.primitiveOrder);
 }
 
+// With the thread cap `threads` (and `pool`, where given).
+Bvh buildOn(const std::vector<Aabb>& bounds, unsigned threads, ThreadPool* pool = nullptr) {
+    BvhBuildOptions options;
+    options.threads = threads;
+    options.pool = pool;
+    return buildBvh(bounds, options);
+}
+
 TEST(BvhBuild, SameTreeWhateverTheThreadCount) {
     const std::vector<Aabb> bounds = boundsOf(randomTriangleSoup(60000, 5));
-    BvhBuildOptions options;
-    options.threads = 1;
-    const Bvh one = buildBvh(bounds, options);
-    for (unsigned threads : {2u, 3u}) {
-        options.threads = threads;
-        expectSameTree(one, buildBvh(bounds, options));
-    }
+    const Bvh one = buildOn(bounds, 1);
+    for (unsigned threads : {2u, 3u}) expectSameTree(one, buildOn(bounds, threads));
     expectValidStructure(one, bounds, 4);
 }
 
 // On a pool of its own, of any size, at any thread cap: the same tree as on one thread.
 TEST(BvhBuild, SameTreeOnAGivenPool) {
     const std::vector<Aabb> bounds = boundsOf(randomTriangleSoup(70000, 6));
-    BvhBuildOptions options;
-    options.threads = 1;
-    const Bvh one = buildBvh(bounds, options);
+    const Bvh one = buildOn(bounds, 1);
     for (unsigned poolThreads : {1u, 3u}) {
         ThreadPool pool(poolThreads);
-        options.pool = &pool;
-        for (unsigned threads : {0u, 2u, 5u}) {
-            options.threads = threads;
-            expectSameTree(one, buildBvh(bounds, options));
-        }
+        for (unsigned threads : {0u, 2u, 5u}) expectSameTree(one, buildOn(bounds, threads, &pool));
     }
 }
 

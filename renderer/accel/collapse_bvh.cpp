@@ -115,6 +115,178 @@ uint32_t weighChildren(const SubtreeCost& l, const SubtreeCost& r, double area, 
     return choice;
 }
 
+// widenBvh on one four-wide tree. A binary node of the tree the four-wide one was collapsed from is a LaneGroup:
+// some lanes of a four-wide node, or one lane naming a four-wide node, which stands for all of that node's lanes.
+class Widener {
+public:
+    Widener(const WideBvhNode* nodes, size_t count, uint32_t maxRun, std::vector<uint32_t>* leaves)
+        : nodes_(nodes), maxRun_(maxRun), leaves_(leaves), subtree_(count), choices_(count) {}
+
+    // Bottom up: the nodes are depth first, so a backward sweep sees children first. Each four-wide node's binary
+    // nodes are weighed inside it; subtree_[i] is node i's whole subtree.
+    void weighAll() {
+        for (size_t i = subtree_.size(); i-- > 0;) {
+            const uint32_t used = usedLaneMask(nodes_[i]);
+            if (used == 0) throw std::invalid_argument("widenBvh: a node without children");
+            int slots = 0;
+            subtree_[i] = weigh(LaneGroup{(uint32_t)i, used}, true, slots);
+        }
+    }
+
+    // Top down: each node made takes its binary node's children in the lanes the choices give them.
+    void build(std::vector<WideBvhNode8>& out) const {
+        const size_t base = out.size();  // the root; references count from it
+        out.push_back(emptyWideNode<WideBvhNode8>());
+        std::vector<std::pair<LaneGroup, uint32_t>> pending{{canonical(LaneGroup{0u, usedLaneMask(nodes_[0])}), 0u}};
+        while (!pending.empty()) {
+            const auto [binary, made] = pending.back();
+            pending.pop_back();
+            const MadeLanes lanes = lanesOf(binary);
+            uint32_t refs[kBvh8Width];
+            for (int i = 0; i < lanes.used; ++i) refs[i] = laneRef(lanes.group[i], lanes.choice[i], out, base);
+            WideBvhNode8& node = out[base + made];
+            for (int i = 0; i < lanes.used; ++i) {
+                const LaneGroup g = lanes.group[i];
+                const Aabb box = lanesBounds(nodes_[g.node], g.lanes);  // exactly its binary node's box
+                setLane(node, i, box.min, box.max, refs[i]);
+            }
+            // Children are pushed in reverse so the first lane's subtree is laid out right after this node.
+            for (int i = lanes.used - 1; i >= 0; --i)
+                if (!bvhIsLeaf(refs[i])) pending.push_back({lanes.group[i], refs[i]});
+        }
+    }
+
+private:
+    // The lanes of a node made for a binary node, leftmost first, with each one's choices (0 for a leaf): bit 0
+    // says whether it is a node.
+    struct MadeLanes {
+        LaneGroup group[kBvh8Width] = {};
+        uint32_t choice[kBvh8Width];
+        int used = 0;
+    };
+
+    // The binary node's two children, or for a flat node the first lane and the rest (a group weighed, never made
+    // a node of its own, so each node made is a binary node and kBvh8StackSize holds). Returns whether the rest
+    // may be a node.
+    bool children(LaneGroup g, LaneGroup& left, LaneGroup& right) const {
+        uint32_t parts[kBvhWidth] = {};
+        const int n = splitLanes(nodes_[g.node], g.lanes, parts);
+        left = LaneGroup{g.node, parts[0]}, right = LaneGroup{g.node, g.lanes & ~parts[0]};
+        return n == 2;
+    }
+
+    // The group as the binary node's own lanes, where one lane names a node (and a node of one lane is that lane).
+    LaneGroup canonical(LaneGroup g) const {
+        while (std::popcount(g.lanes) == 1) {
+            const uint32_t ref = nodes_[g.node].child[std::countr_zero(g.lanes)];
+            if (bvhIsLeaf(ref)) break;
+            g = LaneGroup{ref, usedLaneMask(nodes_[ref])};
+        }
+        return g;
+    }
+
+    static bool isLeaf(LaneGroup g) { return std::popcount(g.lanes) == 1; }  // of a canonical group
+    double area(LaneGroup g) const { return wideCostArea(lanesBounds(nodes_[g.node], g.lanes)); }
+
+    // The group's subtree cost; records the choices of each binary node of two or more lanes in its four-wide node's
+    // NodeChoices, `slots` of them so far.
+    SubtreeCost weigh(LaneGroup g, bool mayBeNode, int& slots) {
+        if (std::popcount(g.lanes) == 1) {
+            const uint32_t ref = nodes_[g.node].child[std::countr_zero(g.lanes)];
+            if (!bvhIsLeaf(ref)) return subtree_[ref];
+            SubtreeCost leaf;
+            leaf.leaves = 1, leaf.triangles = bvhLeafCount(ref);
+            const double oneBlock = area(g) * kWideBlockCost;  // ≤ kBvhMaxLeafSize triangles
+            for (double& c : leaf.cost) c = oneBlock;
+            return leaf;
+        }
+        LaneGroup left, right;
+        const bool restMayBeNode = children(g, left, right);
+        const SubtreeCost l = weigh(left, true, slots), r = weigh(right, restMayBeNode, slots);
+        SubtreeCost made;
+        NodeChoices& c = choices_[g.node];
+        c.choice[slots] = weighChildren(l, r, area(g), mayBeNode, maxRun_, made);
+        c.lanes[slots++] = (uint8_t)g.lanes;
+        return made;
+    }
+
+    uint32_t choiceOf(LaneGroup g) const {
+        const NodeChoices& c = choices_[g.node];
+        for (int s = 0; s < 3; ++s)
+            if (c.lanes[s] == g.lanes) return c.choice[s];
+        throw std::logic_error("widenBvh: a binary node that was not weighed");
+    }
+
+    // Splits the binary node into lanes as its choices say: each part of 2 .. 8 lanes is split further until the
+    // choices keep a part whole.
+    MadeLanes lanesOf(LaneGroup binary) const {
+        MadeLanes made;
+        if (isLeaf(binary)) {  // a tree of one leaf
+            made.choice[made.used] = 0;
+            made.group[made.used++] = binary;
+            return made;
+        }
+        std::pair<LaneGroup, int> split[2 * kBvh8Width];  // (binary node, the lanes it takes), the leftmost on top
+        int size = 0;
+        auto splitChildren = [&](LaneGroup g, int lanes, int leftLanes) {
+            LaneGroup left, right;
+            children(g, left, right);
+            split[size++] = {canonical(right), lanes - leftLanes};
+            split[size++] = {canonical(left), leftLanes};
+        };
+        splitChildren(binary, kBvh8Width, (int)choiceOpen(choiceOf(binary)));
+        while (size > 0) {
+            auto [g, j] = split[--size];
+            const uint32_t choice = isLeaf(g) ? 0u : choiceOf(g);
+            while (j > 1 && choiceSplit(choice, j) == 0) --j;
+            if (j == 1) {
+                made.choice[made.used] = choice;
+                made.group[made.used++] = g;
+            } else {
+                splitChildren(g, j, (int)choiceSplit(choice, j));
+            }
+        }
+        return made;
+    }
+
+    // A lane's reference: a new node in `out` (counted from `base`), a run of leaves, or the four-wide tree's leaf.
+    uint32_t laneRef(LaneGroup g, uint32_t choice, std::vector<WideBvhNode8>& out, size_t base) const {
+        if (choice & 1u) {
+            out.push_back(emptyWideNode<WideBvhNode8>());
+            return (uint32_t)(out.size() - 1 - base);
+        }
+        return leaves_ ? leafRun(g) : nodes_[g.node].child[std::countr_zero(g.lanes)];
+    }
+
+    // A run of leaves in `leaves_`, in primitive order, as a lane's reference.
+    uint32_t leafRun(LaneGroup g) const {
+        uint32_t refs[kBvhMaxLeafRun];
+        uint32_t n = 0;
+        auto collect = [&](uint32_t node, uint32_t lanes, auto&& self) -> void {
+            for (uint32_t m = lanes; m; m &= m - 1) {
+                const uint32_t ref = nodes_[node].child[std::countr_zero(m)];
+                if (bvhIsLeaf(ref)) refs[n++] = ref;
+                else self(ref, usedLaneMask(nodes_[ref]), self);
+            }
+        };
+        collect(g.node, g.lanes, collect);
+        for (uint32_t i = 1; i < n; ++i)  // insertion sort: a handful
+            for (uint32_t j = i; j > 0 && bvhLeafFirst(refs[j]) < bvhLeafFirst(refs[j - 1]); --j)
+                std::swap(refs[j], refs[j - 1]);
+        if (leaves_->size() + n > kBvhMaxFirstPrimitive)
+            throw std::length_error("widenBvh: more leaves than a child reference can name");
+        const uint32_t first = (uint32_t)leaves_->size();
+        leaves_->insert(leaves_->end(), refs, refs + n);
+        return bvhLeafRef(first, n);
+    }
+
+    const WideBvhNode* nodes_;
+    uint32_t maxRun_;
+    std::vector<uint32_t>* leaves_;
+    std::vector<SubtreeCost> subtree_;
+    std::vector<NodeChoices> choices_;
+};
+
 uint32_t leafRefOf(const BvhNode& leaf) {
     if (leaf.primCount > kBvhMaxLeafSize || leaf.firstOrChild >= kBvhMaxFirstPrimitive)
         throw std::length_error("collapseBvh: a leaf is too large or starts too far to fit a child reference");
@@ -176,142 +348,9 @@ void widenBvh(const WideBvhNode* nodes, size_t count, std::vector<WideBvhNode8>&
     if (count == 0) return;
     if (leaves && groupLeaves > kBvhMaxLeafRun)
         throw std::invalid_argument("widenBvh: runs longer than kBvhMaxLeafRun");
-    const uint32_t maxRun = leaves ? groupLeaves : 1;
-    const size_t base = out.size();  // the root; references count from it
-    // A binary node of the tree the four-wide one was collapsed from is a LaneGroup: some lanes of a four-wide node,
-    // or one lane naming a four-wide node, which stands for all of that node's lanes. Its children: the binary
-    // node's two, or for a flat node the first lane and the rest (a group weighed, never made a node of its own,
-    // so each node made is a binary node and kBvh8StackSize holds). Returns whether the rest may be a node.
-    auto children = [&](LaneGroup g, LaneGroup& left, LaneGroup& right) {
-        uint32_t parts[kBvhWidth] = {};
-        const int n = splitLanes(nodes[g.node], g.lanes, parts);
-        left = LaneGroup{g.node, parts[0]}, right = LaneGroup{g.node, g.lanes & ~parts[0]};
-        return n == 2;
-    };
-    // The group as the binary node's own lanes, where one lane names a node (and a node of one lane is that lane).
-    auto canonical = [&](LaneGroup g) {
-        while (std::popcount(g.lanes) == 1) {
-            const uint32_t ref = nodes[g.node].child[std::countr_zero(g.lanes)];
-            if (bvhIsLeaf(ref)) break;
-            g = LaneGroup{ref, usedLaneMask(nodes[ref])};
-        }
-        return g;
-    };
-    auto isLeaf = [&](LaneGroup g) { return std::popcount(g.lanes) == 1; };  // of a canonical group
-    auto area = [&](LaneGroup g) { return wideCostArea(lanesBounds(nodes[g.node], g.lanes)); };
-
-    // Bottom up: the nodes are depth first, so a backward sweep sees children first. Each four-wide node's binary
-    // nodes are weighed inside it; subtree[i] is node i's whole subtree.
-    std::vector<SubtreeCost> subtree(count);
-    std::vector<NodeChoices> choices(count);
-    for (size_t i = count; i-- > 0;) {
-        int slots = 0;
-        auto weigh = [&](LaneGroup g, bool mayBeNode, auto&& self) -> SubtreeCost {
-            if (std::popcount(g.lanes) == 1) {
-                const uint32_t ref = nodes[g.node].child[std::countr_zero(g.lanes)];
-                if (!bvhIsLeaf(ref)) return subtree[ref];
-                SubtreeCost leaf;
-                leaf.leaves = 1, leaf.triangles = bvhLeafCount(ref);
-                const double oneBlock = area(g) * kWideBlockCost;  // ≤ kBvhMaxLeafSize triangles
-                for (double& c : leaf.cost) c = oneBlock;
-                return leaf;
-            }
-            LaneGroup left, right;
-            const bool restMayBeNode = children(g, left, right);
-            const SubtreeCost l = self(left, true, self), r = self(right, restMayBeNode, self);
-            SubtreeCost made;
-            choices[i].choice[slots] = weighChildren(l, r, area(g), mayBeNode, maxRun, made);
-            choices[i].lanes[slots++] = (uint8_t)g.lanes;
-            return made;
-        };
-        const uint32_t used = usedLaneMask(nodes[i]);
-        if (used == 0) throw std::invalid_argument("widenBvh: a node without children");
-        subtree[i] = weigh(LaneGroup{(uint32_t)i, used}, true, weigh);
-    }
-    auto choiceOf = [&](LaneGroup g) {
-        const NodeChoices& c = choices[g.node];
-        for (int s = 0; s < 3; ++s)
-            if (c.lanes[s] == g.lanes) return c.choice[s];
-        throw std::logic_error("widenBvh: a binary node that was not weighed");
-    };
-
-    // A run of leaves in `leaves`, in primitive order, as a lane's reference.
-    auto leafRun = [&](LaneGroup g) {
-        uint32_t refs[kBvhMaxLeafRun];
-        uint32_t n = 0;
-        auto collect = [&](uint32_t node, uint32_t lanes, auto&& self) -> void {
-            for (uint32_t m = lanes; m; m &= m - 1) {
-                const uint32_t ref = nodes[node].child[std::countr_zero(m)];
-                if (bvhIsLeaf(ref)) refs[n++] = ref;
-                else self(ref, usedLaneMask(nodes[ref]), self);
-            }
-        };
-        collect(g.node, g.lanes, collect);
-        for (uint32_t i = 1; i < n; ++i)  // insertion sort: a handful
-            for (uint32_t j = i; j > 0 && bvhLeafFirst(refs[j]) < bvhLeafFirst(refs[j - 1]); --j)
-                std::swap(refs[j], refs[j - 1]);
-        if (leaves->size() + n > kBvhMaxFirstPrimitive)
-            throw std::length_error("widenBvh: more leaves than a child reference can name");
-        const uint32_t first = (uint32_t)leaves->size();
-        leaves->insert(leaves->end(), refs, refs + n);
-        return bvhLeafRef(first, n);
-    };
-
-    // Top down: each node made takes its binary node's children in the lanes the choices give them.
-    out.push_back(emptyWideNode<WideBvhNode8>());
-    std::vector<std::pair<LaneGroup, uint32_t>> pending{{canonical(LaneGroup{0u, usedLaneMask(nodes[0])}), 0u}};
-    while (!pending.empty()) {
-        const auto [binary, made] = pending.back();
-        pending.pop_back();
-        LaneGroup lanes[kBvh8Width];
-        uint32_t laneChoice[kBvh8Width];  // each lane's choices (0 for a leaf): bit 0 says whether it is a node
-        int used = 0;
-        std::pair<LaneGroup, int> split[2 * kBvh8Width];  // (binary node, the lanes it takes), the leftmost on top
-        int size = 0;
-        if (isLeaf(binary)) {  // a tree of one leaf
-            laneChoice[used] = 0;
-            lanes[used++] = binary;
-        } else {
-            LaneGroup left, right;
-            children(binary, left, right);
-            const int open = (int)choiceOpen(choiceOf(binary));
-            split[size++] = {canonical(right), kBvh8Width - open};
-            split[size++] = {canonical(left), open};
-        }
-        while (size > 0) {
-            auto [g, j] = split[--size];
-            const uint32_t choice = isLeaf(g) ? 0u : choiceOf(g);
-            while (j > 1 && choiceSplit(choice, j) == 0) --j;
-            if (j == 1) {
-                laneChoice[used] = choice;
-                lanes[used++] = g;
-                continue;
-            }
-            const int k = (int)choiceSplit(choice, j);
-            LaneGroup left, right;
-            children(g, left, right);
-            split[size++] = {canonical(right), j - k};
-            split[size++] = {canonical(left), k};
-        }
-        uint32_t refs[kBvh8Width];
-        for (int i = 0; i < used; ++i) {
-            const LaneGroup g = lanes[i];
-            if (laneChoice[i] & 1u) {
-                refs[i] = (uint32_t)(out.size() - base);
-                out.push_back(emptyWideNode<WideBvhNode8>());
-            } else {
-                refs[i] = leaves ? leafRun(g) : nodes[g.node].child[std::countr_zero(g.lanes)];
-            }
-        }
-        WideBvhNode8& node = out[base + made];
-        for (int i = 0; i < used; ++i) {
-            const Aabb box = lanesBounds(nodes[lanes[i].node], lanes[i].lanes);  // exactly its binary node's box
-            setLane(node, i, box.min, box.max, refs[i]);
-        }
-        // Children are pushed in reverse so the first lane's subtree is laid out right after this node.
-        for (int i = used - 1; i >= 0; --i)
-            if (!bvhIsLeaf(refs[i])) pending.push_back({lanes[i], refs[i]});
-    }
+    Widener widener(nodes, count, leaves ? groupLeaves : 1, leaves);
+    widener.weighAll();
+    widener.build(out);
 }
 
 std::vector<WideBvhNode8> widenBvh(const WideBvhNode* nodes, size_t count) {

@@ -11,8 +11,8 @@
 #include <functional>
 
 #include "fetched_assets.h"
-#include "scene/scene_reader.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
@@ -107,12 +107,7 @@ void expectSameBytes(const FlattenResult& x, const FlattenResult& y, const std::
     EXPECT_EQ(x.warnings.items.size(), y.warnings.items.size()) << what;
 }
 
-Scene readShipped(const std::string& name) {
-    Diagnostics diags;
-    Scene scene = readSceneFile(test::sourcePath("scenes/" + name), diags);
-    EXPECT_FALSE(diags.hasErrors()) << name;
-    return scene;
-}
+Scene readShipped(const std::string& name) { return test::readSourceScene("scenes/" + name); }
 
 std::vector<std::string> shippedScenes() {
     std::vector<std::string> names;

@@ -12,7 +12,6 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <sstream>
 
 #include "test_paths.h"
 
@@ -28,54 +27,64 @@ fs::path freshDir(const std::string& name) { return test::freshDir("image_writer
 
 std::vector<std::string> listDir(const fs::path& dir) { return test::listDir(dir.string()); }
 
+// writeImage's error where it fails, "" where it writes `image` to `path`.
+std::string writeError(const fs::path& path, int width, int height, const std::vector<Vec3>& image) {
+    std::string error;
+    return writeImage(path.string(), width, height, image, error) ? "" : "failed: " + error;
+}
+
 FIBITMAP* loadImage(const fs::path& path) {
     FREE_IMAGE_FORMAT fif = FreeImage_GetFileType(path.c_str());
     if (fif == FIF_UNKNOWN) fif = FreeImage_GetFIFFromFilename(path.c_str());  // TGA has no signature
     return fif == FIF_UNKNOWN ? nullptr : FreeImage_Load(fif, path.c_str());
 }
 
-// Top-down 8-bit pixels of a 24-bit file, in R, G, B order.
-std::vector<Rgb8> readBytes(const fs::path& path, int width, int height) {
-    std::vector<Rgb8> pixels;
+// The image at `path` where it loads as `type` (and `bpp` bits a pixel, where not 0) of width × height; null
+// otherwise, each difference a failure of the test.
+FIBITMAP* loadExpected(const fs::path& path, FREE_IMAGE_TYPE type, unsigned bpp, int width, int height) {
     FIBITMAP* bitmap = loadImage(path);
     EXPECT_NE(bitmap, nullptr) << path;
+    if (!bitmap) return nullptr;
+    EXPECT_EQ(FreeImage_GetImageType(bitmap), type);
+    const bool bppAsAsked = !bpp || FreeImage_GetBPP(bitmap) == bpp;
+    EXPECT_TRUE(bppAsAsked) << FreeImage_GetBPP(bitmap) << " bits a pixel, not " << bpp;
+    const int w = static_cast<int>(FreeImage_GetWidth(bitmap)), h = static_cast<int>(FreeImage_GetHeight(bitmap));
+    EXPECT_EQ(w, width);
+    EXPECT_EQ(h, height);
+    if (FreeImage_GetImageType(bitmap) == type && bppAsAsked && w == width && h == height) return bitmap;
+    FreeImage_Unload(bitmap);
+    return nullptr;
+}
+
+// Top-down pixels of the image at `path` as loadExpected takes it, pixel(scanline, x) each; none where it is not.
+template <class Pixel, class PixelOf>
+std::vector<Pixel> readPixels(const fs::path& path, FREE_IMAGE_TYPE type, unsigned bpp, int width, int height,
+                              PixelOf pixel) {
+    std::vector<Pixel> pixels;
+    FIBITMAP* bitmap = loadExpected(path, type, bpp, width, height);
     if (!bitmap) return pixels;
-    EXPECT_EQ(FreeImage_GetImageType(bitmap), FIT_BITMAP);
-    EXPECT_EQ(FreeImage_GetBPP(bitmap), 24u);
-    EXPECT_EQ(static_cast<int>(FreeImage_GetWidth(bitmap)), width);
-    EXPECT_EQ(static_cast<int>(FreeImage_GetHeight(bitmap)), height);
-    if (FreeImage_GetBPP(bitmap) == 24 && static_cast<int>(FreeImage_GetWidth(bitmap)) == width &&
-        static_cast<int>(FreeImage_GetHeight(bitmap)) == height) {
-        for (int y = 0; y < height; ++y) {
-            const BYTE* line = FreeImage_GetScanLine(bitmap, height - 1 - y);  // scanline 0 = bottom row
-            for (int x = 0; x < width; ++x) {
-                const BYTE* px = line + 3 * x;
-                pixels.push_back({px[FI_RGBA_RED], px[FI_RGBA_GREEN], px[FI_RGBA_BLUE]});
-            }
-        }
+    for (int y = 0; y < height; ++y) {
+        const BYTE* line = FreeImage_GetScanLine(bitmap, height - 1 - y);  // scanline 0 = bottom row
+        for (int x = 0; x < width; ++x) pixels.push_back(pixel(line, x));
     }
     FreeImage_Unload(bitmap);
     return pixels;
 }
 
+// Top-down 8-bit pixels of a 24-bit file, in R, G, B order.
+std::vector<Rgb8> readBytes(const fs::path& path, int width, int height) {
+    return readPixels<Rgb8>(path, FIT_BITMAP, 24, width, height, [](const BYTE* line, int x) {
+        const BYTE* px = line + 3 * x;
+        return Rgb8{px[FI_RGBA_RED], px[FI_RGBA_GREEN], px[FI_RGBA_BLUE]};
+    });
+}
+
 // Top-down pixels of an RGBF file.
 std::vector<Vec3> readFloats(const fs::path& path, int width, int height) {
-    std::vector<Vec3> pixels;
-    FIBITMAP* bitmap = loadImage(path);
-    EXPECT_NE(bitmap, nullptr) << path;
-    if (!bitmap) return pixels;
-    EXPECT_EQ(FreeImage_GetImageType(bitmap), FIT_RGBF);
-    EXPECT_EQ(static_cast<int>(FreeImage_GetWidth(bitmap)), width);
-    EXPECT_EQ(static_cast<int>(FreeImage_GetHeight(bitmap)), height);
-    if (FreeImage_GetImageType(bitmap) == FIT_RGBF && static_cast<int>(FreeImage_GetWidth(bitmap)) == width &&
-        static_cast<int>(FreeImage_GetHeight(bitmap)) == height) {
-        for (int y = 0; y < height; ++y) {
-            const auto* line = reinterpret_cast<const FIRGBF*>(FreeImage_GetScanLine(bitmap, height - 1 - y));
-            for (int x = 0; x < width; ++x) pixels.push_back({line[x].red, line[x].green, line[x].blue});
-        }
-    }
-    FreeImage_Unload(bitmap);
-    return pixels;
+    return readPixels<Vec3>(path, FIT_RGBF, 0, width, height, [](const BYTE* line, int x) {
+        const FIRGBF& px = reinterpret_cast<const FIRGBF*>(line)[x];
+        return Vec3(px.red, px.green, px.blue);
+    });
 }
 
 // Top-down pixels of a little-endian RGB PFM, read by the format's definition (rows bottom to top),
@@ -151,9 +160,7 @@ TEST_P(ImageWriterLossless8Bit, StoresRoundedClampedBytesExactly) {
     std::vector<Rgb8> expected;
     makeByteImage(width, height, image, expected);
     const fs::path path = freshDir("lossless_" + GetParam()) / ("out." + GetParam());
-
-    std::string error;
-    ASSERT_TRUE(writeImage(path.string(), width, height, image, error)) << error;
+    ASSERT_EQ(writeError(path, width, height, image), "");
     const std::vector<Rgb8> got = readBytes(path, width, height);
     ASSERT_EQ(got.size(), expected.size());
     for (size_t i = 0; i < got.size(); ++i) {
@@ -183,8 +190,7 @@ TEST(ImageWriterJpeg, StoresBytesWithinJpegLoss) {
     }
     for (const char* ext : {"jpg", "jpeg", "JPG"}) {
         const fs::path path = freshDir(std::string("jpeg_") + ext) / (std::string("out.") + ext);
-        std::string error;
-        ASSERT_TRUE(writeImage(path.string(), width, height, image, error)) << error;
+        ASSERT_EQ(writeError(path, width, height, image), "");
         const std::vector<Rgb8> got = readBytes(path, width, height);
         ASSERT_EQ(got.size(), expected.size());
         int worst = 0;
@@ -212,8 +218,7 @@ TEST_P(ImageWriterExactFloat, StoresFloatsExactly) {
     const int width = 13, height = 7;
     const std::vector<Vec3> image = floatImage(width, height, false);
     const fs::path path = freshDir("float_" + GetParam()) / ("out." + GetParam());
-    std::string error;
-    ASSERT_TRUE(writeImage(path.string(), width, height, image, error)) << error;
+    ASSERT_EQ(writeError(path, width, height, image), "");
     const std::vector<Vec3> got = readFloatFile(path, width, height);
     ASSERT_EQ(got.size(), image.size());
     for (size_t i = 0; i < got.size(); ++i) {
@@ -229,8 +234,7 @@ TEST(ImageWriterHdr, StoresRgbeWithinOnePercentOfLargestChannel) {
     const int width = 13, height = 7;
     const std::vector<Vec3> image = floatImage(width, height, true);
     const fs::path path = freshDir("hdr") / "out.hdr";
-    std::string error;
-    ASSERT_TRUE(writeImage(path.string(), width, height, image, error)) << error;
+    ASSERT_EQ(writeError(path, width, height, image), "");
     const std::vector<Vec3> got = readFloats(path, width, height);
     ASSERT_EQ(got.size(), image.size());
     for (size_t i = 0; i < got.size(); ++i) {
@@ -253,8 +257,7 @@ TEST_P(ImageWriterOrientation, TopLeftPixelStaysTopLeft) {
         for (int x = 8; x < 16; ++x) image[y * width + x] = {0.0f, 0.0f, 1.0f};
     const std::string ext = GetParam();
     const fs::path path = freshDir("orientation_" + ext) / ("out." + ext);
-    std::string error;
-    ASSERT_TRUE(writeImage(path.string(), width, height, image, error)) << error;
+    ASSERT_EQ(writeError(path, width, height, image), "");
 
     const bool isFloat = ext == "exr" || ext == "hdr" || ext == "pfm";
     auto pixel = [&](const std::vector<Vec3>& floats, const std::vector<Rgb8>& bytes, int x, int y) {
@@ -284,8 +287,7 @@ TEST(ImageWriterPfm, FileStoresTopRowLastAndFreeImageReadsItFlipped) {
     std::vector<Vec3> image(width * height, Vec3(0.0f));
     image[0] = {1.0f, 0.0f, 0.0f};  // top-left
     const fs::path path = freshDir("pfm_rows") / "out.pfm";
-    std::string error;
-    ASSERT_TRUE(writeImage(path.string(), width, height, image, error)) << error;
+    ASSERT_EQ(writeError(path, width, height, image), "");
 
     std::ifstream in(path, std::ios::binary);
     const std::string expectedHeader = "PF\n2 3\n-1.000000\n";  // RGB, 2x3, little-endian
@@ -374,12 +376,7 @@ TEST(ImageWriterFailure, ExistingFileIsReplacedOnlyOnSuccess) {
     const fs::path dir = freshDir("replace");
     const fs::path path = dir / "out.png";
     { std::ofstream(path) << "old contents"; }
-    auto contents = [&] {
-        std::ifstream in(path, std::ios::binary);
-        std::stringstream s;
-        s << in.rdbuf();
-        return s.str();
-    };
+    auto contents = [&] { return test::readFileText(path.string()); };
 
     std::string error;
     EXPECT_FALSE(writeImage(path.string(), 2, 2, std::vector<Vec3>(3), error));

@@ -10,7 +10,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <future>
 #include <thread>
 
@@ -19,14 +18,8 @@
 namespace trazo {
 namespace {
 
-std::string writeFile(const std::string& name, const std::string& text) {
-    const std::string path = test::tempPath(name);
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-}
-
 TEST(TextFile, ReadsARegularFileWhole) {
-    const std::string path = writeFile("whole.txt", std::string("a\0b\nc", 5));
+    const std::string path = test::writeTempFile("whole.txt", std::string("a\0b\nc", 5));
     std::string text, reason;
     ASSERT_TRUE(readWholeFile(path, text, reason)) << reason;
     EXPECT_EQ(text, std::string("a\0b\nc", 5));
@@ -73,7 +66,7 @@ TEST(TextFile, RefusesAFifoWithoutBlocking) {
 }
 
 TEST(TextFile, NulInAPathIsRefused) {
-    const std::string path = writeFile("nul", "x");
+    const std::string path = test::writeTempFile("nul", "x");
     std::string text, reason;
     EXPECT_FALSE(readWholeFile(path + std::string("\0.obj", 5), text, reason));  // would open `path`
     EXPECT_EQ(reason, "the path contains a NUL byte");
@@ -82,7 +75,7 @@ TEST(TextFile, NulInAPathIsRefused) {
 // The size is checked before any allocation: a sparse file that claims 2^31 + 1 bytes costs nothing to make
 // and is refused at once; a file one byte over a limit is refused, one at the limit is read.
 TEST(TextFile, SizeIsBoundedBeforeReading) {
-    const std::string sparse = writeFile("sparse.obj", "");
+    const std::string sparse = test::writeTempFile("sparse.obj", "");
     ASSERT_EQ(::truncate(sparse.c_str(), (off_t(1) << 31) + 1), 0);
     std::string text, reason;
     EXPECT_FALSE(readWholeFile(sparse, text, reason));
@@ -90,7 +83,7 @@ TEST(TextFile, SizeIsBoundedBeforeReading) {
     EXPECT_TRUE(text.empty());
     std::filesystem::remove(sparse);
 
-    const std::string small = writeFile("limit.txt", std::string(1000, 'x'));
+    const std::string small = test::writeTempFile("limit.txt", std::string(1000, 'x'));
     EXPECT_FALSE(readWholeFile(small, text, reason, 999));
     EXPECT_EQ(reason, "file too large (1000 bytes; the limit is 999 bytes)");
     EXPECT_TRUE(readWholeFile(small, text, reason, 1000)) << reason;
@@ -111,7 +104,7 @@ TEST(TextFile, OpenRegularFileOpensOnlyRegularFiles) {
     std::string reason;
     EXPECT_LT(openRegularFile("/dev/null", reason), 0);
     EXPECT_EQ(reason, "not a regular file (a character device)");
-    const int fd = openRegularFile(writeFile("readable.txt", "x"), reason);
+    const int fd = openRegularFile(test::writeTempFile("readable.txt", "x"), reason);
     EXPECT_GE(fd, 0) << reason;
     if (fd >= 0) ::close(fd);
 }

@@ -142,14 +142,5 @@ TEST(IntersectCylinder, LongPoleSeenNearlyAlongItsAxis) {
     EXPECT_GT(tally.hits, 1900);
 }
 
-TEST(IntersectCylinder, RandomRaysMatchTheOracle) {
-    Tally tally;
-    Sampler sampler(13);
-    const ShapeCase sc = cylinderCase(1.0f, {0, 0, 0});
-    for (int i = 0; i < 5000; ++i) compareOne(sc, sampler.rayNear(sc), 0, kInf, tally);
-    expectClean(tally, "cylinder");
-    EXPECT_GT(tally.hits, 1000);
-}
-
 }  // namespace
 }  // namespace trazo

@@ -1,5 +1,5 @@
-// Tests (host) run on every kind of kShapes: grazing rays, scale invariance, and rays spawned from a hit
-// (offsetRayOrigin with the kind's objectHitPoint) never re-hitting their surface.
+// Tests (host) run on every kind of kShapes: random rays against the oracle, grazing rays, scale invariance, and
+// rays spawned from a hit (offsetRayOrigin with the kind's objectHitPoint) never re-hitting their surface.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,6 +27,38 @@ struct NamedFactory {
 };
 const NamedFactory kShapes[] = {
     {"sphere", sphereCase}, {"box", boxCase}, {"cylinder", cylinderCase}, {"rectangle", rectangleCase}};
+
+// ---- Random rays from outside and inside: each kind against its oracle (the rectangle: its two triangles). ----
+
+struct RandomRays {
+    NamedFactory shape;
+    unsigned seed;
+    int minHits;
+    bool windowed;  // each ray again with a window (tMin, tMax) that may cut the near root
+};
+
+class IntersectRandomRays : public ::testing::TestWithParam<RandomRays> {};
+
+TEST_P(IntersectRandomRays, MatchTheOracle) {
+    const RandomRays& c = GetParam();
+    Tally tally;
+    Sampler sampler(c.seed);
+    const ShapeCase sc = c.shape.make(1.0f, {0, 0, 0});
+    for (int i = 0; i < 5000; ++i) {
+        const Ray ray = sampler.rayNear(sc);
+        compareOne(sc, ray, 0, kInf, tally);
+        if (c.windowed) compareOne(sc, ray, float(sampler.uniform(0, 3)), float(sampler.uniform(3, 8)), tally);
+    }
+    expectClean(tally, c.shape.name);
+    EXPECT_GT(tally.hits, c.minHits);
+}
+
+INSTANTIATE_TEST_SUITE_P(Kinds, IntersectRandomRays,
+                         ::testing::Values(RandomRays{{"sphere", sphereCase}, 19, 2000, true},
+                                           RandomRays{{"box", boxCase}, 11, 1000, false},
+                                           RandomRays{{"cylinder", cylinderCase}, 13, 1000, false},
+                                           RandomRays{{"rectangle", rectangleCase}, 17, 500, false}),
+                         [](const auto& info) { return std::string(info.param.shape.name); });
 
 // ---- Grazing: rays skimming each surface, just outside or just inside it. ----
 

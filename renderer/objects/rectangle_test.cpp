@@ -31,14 +31,5 @@ TEST(IntersectRectangle, TwoSidedWithTheShapeNormal) {
     EXPECT_TRUE(intersectRectangle(rect, {{0, 0, 0}, {0, 1, 0}}, 1.9f, 2.1f, h));
 }
 
-TEST(IntersectRectangle, RandomRaysMatchTriangles) {
-    Tally tally;
-    Sampler sampler(17);
-    const ShapeCase sc = rectangleCase(1.0f, {0, 0, 0});
-    for (int i = 0; i < 5000; ++i) compareOne(sc, sampler.rayNear(sc), 0, kInf, tally);
-    expectClean(tally, "rectangle");
-    EXPECT_GT(tally.hits, 500);
-}
-
 }  // namespace
 }  // namespace trazo

@@ -127,19 +127,5 @@ TEST(IntersectSphere, HugeSphereNear) {
     EXPECT_EQ(tally.hits, tally.rays);
 }
 
-TEST(IntersectSphere, RandomRaysMatchTheOracle) {
-    Tally tally;
-    Sampler sampler(19);
-    const ShapeCase sc = sphereCase(1.0f, {0, 0, 0});
-    for (int i = 0; i < 5000; ++i) {
-        const Ray ray = sampler.rayNear(sc);
-        compareOne(sc, ray, 0, kInf, tally);
-        // And with a window cutting the near root.
-        compareOne(sc, ray, float(sampler.uniform(0, 3)), float(sampler.uniform(3, 8)), tally);
-    }
-    expectClean(tally, "sphere");
-    EXPECT_GT(tally.hits, 2000);
-}
-
 }  // namespace
 }  // namespace trazo

@@ -13,6 +13,7 @@
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
 #include "scene/scene_reader.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
@@ -251,14 +252,8 @@ TEST(ErrorProbe, EstimateRecoversAKnownVariance) {
     EXPECT_FALSE(estimateErrorWithProbe(image, probe, {}).available);
 }
 
-const char* kAreaLightScene =
-    "SceneSettings\n{\n    RenderWidth 37\n    RenderHeight 23\n    IndirectQuality 0\n    Antialiasing 4\n}\n"
-    "Camera\n{\n    POV 0 3 8\n    POI 0 1 0\n    FOV 45\n}\n"
-    "Material\n{\n    Name white\n    DiffuseColor 0.8 0.8 0.8\n}\n"
-    "Box\n{\n    Material white\n    Scale 8 0.2 8\n    Translation 0 -0.1 0\n}\n"
-    "Sphere\n{\n    Material white\n    Center 0 1 0\n    Radius 1\n}\n"
-    "AreaLight\n{\n    Position 0.5 4 0\n    Direction 0 -1 0\n    Width 3\n    Height 3\n    Subdivision 4 4\n"
-    "    Color 1 1 1\n}\n";
+const std::string kAreaLightScene =
+    test::penumbraSceneText("    RenderWidth 37\n    RenderHeight 23\n    IndirectQuality 0\n    Antialiasing 4\n");
 
 // The probe's pixel k is bit for bit image pixel pixels[k] of a render with the probe's seed: the backend maps
 // the right pixels and the probe is the image's own estimator.

@@ -8,8 +8,10 @@
 namespace trazo {
 namespace {
 
-std::vector<std::string> formatted(const Diagnostics& d) {
-    std::vector<std::string> out;
+using Lines = std::vector<std::string>;
+
+Lines formatted(const Diagnostics& d) {
+    Lines out;
     for (const Diagnostic& x : d.items) out.push_back(formatDiagnostic(x));
     return out;
 }
@@ -102,69 +104,72 @@ TEST(BlockLexer, WindowsLineEndingsAndByteOrderMark) {
     EXPECT_EQ(blocks[0].parameters[0].values.size(), 1u);
 }
 
-TEST(BlockLexer, UnterminatedBlockAtEndOfFile) {
-    Diagnostics diags;
-    const auto blocks = lexBlocks("Camera\n{\n FOV 30\n\nSphere\n{\n Radius 1\n", "u.scene", diags);
-    ASSERT_EQ(diags.items.size(), 2u);
-    // The Camera block is closed by nobody: reported at its own line, and recovered as two blocks.
-    EXPECT_EQ(formatDiagnostic(diags.items[0]), "u.scene:1: error: unterminated block 'Camera' (no '}' before line 6)");
-    EXPECT_EQ(formatDiagnostic(diags.items[1]),
-              "u.scene:5: error: unterminated block 'Sphere' (no '}' before the end of the file)");
-    ASSERT_EQ(blocks.size(), 2u);
-    EXPECT_FALSE(blocks[0].terminated);
-    ASSERT_EQ(blocks[0].parameters.size(), 1u);  // "Sphere" was not kept as a parameter of Camera
-    EXPECT_EQ(blocks[1].identifier, "Sphere");
-    EXPECT_EQ(blocks[1].where.line, 5);
+// A block as "Identifier:line params=N", with " unterminated" where its '}' is missing.
+std::string blockSummary(const Block& b) {
+    return b.identifier + ":" + std::to_string(b.where.line) + " params=" + std::to_string(b.parameters.size()) +
+           (b.terminated ? "" : " unterminated");
 }
 
-TEST(BlockLexer, UnterminatedBeforeSameLineBrace) {
+// A syntax error: the text (as s.scene), every diagnostic it gives, and the blocks recovered (blockSummary).
+struct SyntaxCase {
+    const char* name;
+    std::string text;
+    Lines errors;
+    Lines blocks;
+};
+
+void PrintTo(const SyntaxCase& c, std::ostream* os) { *os << c.name; }
+
+class BlockLexerSyntax : public ::testing::TestWithParam<SyntaxCase> {};
+
+TEST_P(BlockLexerSyntax, ReportsEachErrorAndRecoversTheBlocks) {
     Diagnostics diags;
-    const auto blocks = lexBlocks("Camera {\n FOV 30\nSphere {\n Radius 1\n}\n", "v.scene", diags);
-    ASSERT_EQ(diags.items.size(), 1u);
-    EXPECT_EQ(formatDiagnostic(diags.items[0]), "v.scene:1: error: unterminated block 'Camera' (no '}' before line 3)");
-    ASSERT_EQ(blocks.size(), 2u);
-    EXPECT_EQ(blocks[1].identifier, "Sphere");
-    EXPECT_TRUE(blocks[1].terminated);
+    const auto blocks = lexBlocks(GetParam().text, "s.scene", diags);
+    EXPECT_EQ(formatted(diags), GetParam().errors);
+    Lines recovered;
+    for (const Block& b : blocks) recovered.push_back(blockSummary(b));
+    EXPECT_EQ(recovered, GetParam().blocks);
 }
 
-TEST(BlockLexer, StrayBraceAndTextOutsideBlocks) {
-    Diagnostics diags;
-    const auto blocks = lexBlocks("Sphere\n{\n}\n}\nRadius 1\n\"x.obj\"\n", "s.scene", diags);
-    ASSERT_EQ(diags.items.size(), 3u);
-    EXPECT_EQ(formatDiagnostic(diags.items[0]), "s.scene:4:1: error: stray '}' outside a block");
-    EXPECT_EQ(formatDiagnostic(diags.items[1]), "s.scene:5:1: error: text outside a block: 'Radius 1'");
-    EXPECT_EQ(formatDiagnostic(diags.items[2]), "s.scene:6:1: error: text outside a block: '\"x.obj\"'");
-    EXPECT_EQ(blocks.size(), 1u);
-}
+INSTANTIATE_TEST_SUITE_P(
+    BlockLexer, BlockLexerSyntax,
+    ::testing::Values(
+        // The Camera block is closed by nobody: reported at its own line, and recovered as two blocks ("Sphere"
+        // is not kept as a parameter of Camera).
+        SyntaxCase{"UnterminatedBlockAtEndOfFile",
+                   "Camera\n{\n FOV 30\n\nSphere\n{\n Radius 1\n",
+                   {"s.scene:1: error: unterminated block 'Camera' (no '}' before line 6)",
+                    "s.scene:5: error: unterminated block 'Sphere' (no '}' before the end of the file)"},
+                   {"Camera:1 params=1 unterminated", "Sphere:5 params=1 unterminated"}},
+        SyntaxCase{"UnterminatedBeforeSameLineBrace",
+                   "Camera {\n FOV 30\nSphere {\n Radius 1\n}\n",
+                   {"s.scene:1: error: unterminated block 'Camera' (no '}' before line 3)"},
+                   {"Camera:1 params=1 unterminated", "Sphere:3 params=1"}},
+        SyntaxCase{"StrayBraceAndTextOutsideBlocks",
+                   "Sphere\n{\n}\n}\nRadius 1\n\"x.obj\"\n",
+                   {"s.scene:4:1: error: stray '}' outside a block",
+                    "s.scene:5:1: error: text outside a block: 'Radius 1'",
+                    "s.scene:6:1: error: text outside a block: '\"x.obj\"'"},
+                   {"Sphere:1 params=0"}},
+        SyntaxCase{"BraceWithoutNameAndUnterminatedQuote",
+                   "{\n Radius 1\n}\nMesh {\n Source \"a.obj\n}\n",
+                   {"s.scene:1:1: error: '{' without a block name", "s.scene:5:9: error: unterminated quoted path"},
+                   {":1 params=1", "Mesh:4 params=1"}},
+        SyntaxCase{"ClosingBraceAfterValues",
+                   "Sphere {\n Radius 1 }\nBox {\n}\n",
+                   {"s.scene:2:11: error: '}' must be on its own line"},
+                   {"Sphere:1 params=1", "Box:3 params=0"}},
+        SyntaxCase{"IdentifierWithoutBraceAtTheEnd",
+                   "Sphere {\n}\nBox\n",
+                   {"s.scene:3: error: expected '{' after 'Box'"},
+                   {"Sphere:1 params=0"}}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 TEST(BlockLexer, IdentifierWithoutBrace) {
     Diagnostics diags;
     lexBlocks("Sphere\nRadius 1\n", "i.scene", diags);
     ASSERT_GE(diags.items.size(), 1u);
     EXPECT_EQ(formatDiagnostic(diags.items[0]), "i.scene:1: error: expected '{' after 'Sphere'");
-    Diagnostics atEnd;
-    lexBlocks("Sphere {\n}\nBox\n", "j.scene", atEnd);
-    ASSERT_EQ(atEnd.items.size(), 1u);
-    EXPECT_EQ(formatDiagnostic(atEnd.items[0]), "j.scene:3: error: expected '{' after 'Box'");
-}
-
-TEST(BlockLexer, BraceWithoutNameAndUnterminatedQuote) {
-    Diagnostics diags;
-    const auto blocks = lexBlocks("{\n Radius 1\n}\nMesh {\n Source \"a.obj\n}\n", "b.scene", diags);
-    ASSERT_EQ(diags.items.size(), 2u);
-    EXPECT_EQ(formatDiagnostic(diags.items[0]), "b.scene:1:1: error: '{' without a block name");
-    EXPECT_EQ(formatDiagnostic(diags.items[1]), "b.scene:5:9: error: unterminated quoted path");
-    ASSERT_EQ(blocks.size(), 2u);
-    EXPECT_TRUE(blocks[0].identifier.empty());
-}
-
-TEST(BlockLexer, ClosingBraceAfterValues) {
-    Diagnostics diags;
-    const auto blocks = lexBlocks("Sphere {\n Radius 1 }\nBox {\n}\n", "k.scene", diags);
-    ASSERT_EQ(diags.items.size(), 1u);
-    EXPECT_EQ(formatDiagnostic(diags.items[0]), "k.scene:2:11: error: '}' must be on its own line");
-    ASSERT_EQ(blocks.size(), 2u);
-    EXPECT_EQ(blocks[0].parameters.size(), 1u);
 }
 
 }  // namespace
@@ -212,9 +217,7 @@ TEST(BlockLexerHostile, LineOverTheLimitIsAnErrorAtItsLine) {
     const std::string over(kMaxLineBytes - 8, '1');  // " Radius " + over + "\r" = limit + 1 bytes
     Diagnostics diags;
     blocks = lexBlocks("Sphere {\n Radius " + over + "\r\n Radius 2\n}\n", "long.scene", diags);
-    ASSERT_EQ(diags.items.size(), 1u);
-    EXPECT_EQ(formatDiagnostic(diags.items[0]),
-              "long.scene:2: error: line too long (65537 bytes; the limit is 65536 bytes)");
+    EXPECT_EQ(formatted(diags), Lines({"long.scene:2: error: line too long (65537 bytes; the limit is 65536 bytes)"}));
     ASSERT_EQ(blocks.size(), 1u);
     ASSERT_EQ(blocks[0].parameters.size(), 1u);  // the long line is skipped, the rest is read
     EXPECT_EQ(blocks[0].parameters[0].line, 3);
@@ -228,19 +231,18 @@ TEST(BlockLexerHostile, TokenOverTheLimitIsAnErrorAtItsColumn) {
     lexBlocks("Mesh {\n Source \"" + std::string(kMaxTokenBytes + 1, 'a') + "\"\n Name " +
                   std::string(kMaxTokenBytes + 1, 'b') + "\n}\n",
               "tok.scene", diags);
-    ASSERT_EQ(diags.items.size(), 2u);
-    EXPECT_EQ(formatDiagnostic(diags.items[0]),
-              "tok.scene:2:9: error: quoted path too long (4097 bytes; the limit is 4096 bytes)");
-    EXPECT_EQ(formatDiagnostic(diags.items[1]), "tok.scene:3:7: error: token too long (4097 bytes; the limit is 4096 bytes)");
+    EXPECT_EQ(formatted(diags),
+              Lines({"tok.scene:2:9: error: quoted path too long (4097 bytes; the limit is 4096 bytes)",
+                     "tok.scene:3:7: error: token too long (4097 bytes; the limit is 4096 bytes)"}));
 }
 
 TEST(BlockLexerHostile, NulByteIsAnErrorExceptInAComment) {
     const char raw[] = "Mesh {\n Source \"a\0b.obj\"\n Material m\0x\n # \0 comment\n}\n";
     Diagnostics diags;
     const auto blocks = lexBlocks(std::string(raw, sizeof raw - 1), "nul.scene", diags);
-    ASSERT_EQ(diags.items.size(), 2u);
-    EXPECT_EQ(formatDiagnostic(diags.items[0]), "nul.scene:2:11: error: NUL byte in the text (not allowed)");
-    EXPECT_EQ(formatDiagnostic(diags.items[1]), "nul.scene:3:12: error: NUL byte in the text (not allowed)");
+    EXPECT_EQ(formatted(diags),
+              Lines({"nul.scene:2:11: error: NUL byte in the text (not allowed)",
+                     "nul.scene:3:12: error: NUL byte in the text (not allowed)"}));
     ASSERT_EQ(blocks.size(), 1u);
     EXPECT_TRUE(blocks[0].parameters.empty());
     EXPECT_FALSE(blocks[0].complete);  // so that no "missing required parameter 'Source'" follows

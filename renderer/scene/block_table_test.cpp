@@ -6,24 +6,18 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <regex>
 #include <set>
 #include <sstream>
+
+#include "test_paths.h"
 
 namespace trazo {
 namespace {
 
 const std::string kDocsSpec = TRAZO_SOURCE_DIR "/docs/SPEC.md";
 const std::string kSharedSpec = TRAZO_SOURCE_DIR "/../shared/SPEC.md";
-
-std::string readAll(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 // From `start` to `end`, or to the end of the text when no `end` follows (the last section).
 std::string section(const std::string& spec, const std::string& start, const std::string& end) {
@@ -39,68 +33,76 @@ struct SpecParam {
     std::string defaultText;
 };
 
-// §3 paragraphs look like "**Sphere** — `Material` name; `Center` [0 0 0]; `Radius` [1]. More text."
-// The parameters are the backticked names of the first sentence; "`A/B/C`" names three; "transforms as for
-// Box" names Box's transforms.
-std::map<std::string, std::vector<SpecParam>> specBlocks(const std::string& text) {
-    std::map<std::string, std::vector<SpecParam>> blocks;
-    static const std::regex kHead(R"(^\*\*(\w+)\*\* — (.*)$)");
+// The default in the text after a parameter's name: "—" (required), else the first bracketed value that is not
+// "[decided …]" or "[ext…]", else "".
+std::string defaultIn(const std::string& after) {
+    std::string defaultText;
+    if (after.find("—") != std::string::npos) defaultText = "—";
+    static const std::regex kBracket(R"(\[([^\]]*)\])");
+    for (std::sregex_iterator it(after.begin(), after.end(), kBracket), e; it != e; ++it) {
+        const std::string b = (*it)[1].str();
+        if (b.rfind("decided", 0) == 0 || b.rfind("ext", 0) == 0) continue;
+        return b;
+    }
+    return defaultText;
+}
+
+// The parameters a paragraph names: the backticked names of its first sentence ("`A/B/C`" names three), and
+// Box's transforms where that sentence says "transforms as for Box".
+std::vector<SpecParam> paragraphParams(std::string sentence) {
     static const std::regex kSentenceEnd(R"(\.(\s|$))");
+    std::smatch end;
+    if (std::regex_search(sentence, end, kSentenceEnd)) sentence.resize(size_t(end.position(0)));
+    std::vector<SpecParam> params;
+    size_t pos = 0;
+    while ((pos = sentence.find('`', pos)) != std::string::npos) {
+        const size_t close = sentence.find('`', pos + 1);
+        const std::string inside = sentence.substr(pos + 1, close - pos - 1);
+        size_t stop = sentence.find_first_of("`;", close + 1);
+        if (stop == std::string::npos) stop = sentence.size();
+        const std::string defaultText = defaultIn(sentence.substr(close + 1, stop - close - 1));
+        std::istringstream names(inside.substr(0, inside.find(' ')));
+        std::string name;
+        while (std::getline(names, name, '/')) params.push_back({name, defaultText});
+        pos = close + 1;
+    }
+    if (sentence.find("transforms as for Box") != std::string::npos) {
+        for (const char* t : {"Translation", "Rotation", "Scale"}) params.push_back({t, ""});
+    }
+    return params;
+}
+
+using SpecBlocks = std::map<std::string, std::vector<SpecParam>>;
+
+// Each line of `text` that `lineForm` matches whole gives block m[1] the parameters of the paragraph m[2], less
+// what `remarks` matches (where given).
+SpecBlocks specParams(const std::string& text, const std::regex& lineForm, const std::regex* remarks = nullptr) {
+    SpecBlocks blocks;
     std::istringstream lines(text);
     std::string line;
+    std::smatch m;
     while (std::getline(lines, line)) {
-        std::smatch m;
-        if (!std::regex_match(line, m, kHead)) continue;
-        std::string sentence = m[2].str();
-        std::smatch end;
-        if (std::regex_search(sentence, end, kSentenceEnd)) sentence.resize(size_t(end.position(0)));
-        std::vector<SpecParam>& params = blocks[m[1].str()];
-        size_t pos = 0;
-        while ((pos = sentence.find('`', pos)) != std::string::npos) {
-            const size_t close = sentence.find('`', pos + 1);
-            const std::string inside = sentence.substr(pos + 1, close - pos - 1);
-            size_t stop = sentence.find_first_of("`;", close + 1);
-            if (stop == std::string::npos) stop = sentence.size();
-            const std::string after = sentence.substr(close + 1, stop - close - 1);
-            std::string defaultText;
-            if (after.find("—") != std::string::npos) defaultText = "—";
-            static const std::regex kBracket(R"(\[([^\]]*)\])");
-            for (std::sregex_iterator it(after.begin(), after.end(), kBracket), e; it != e; ++it) {
-                const std::string b = (*it)[1].str();
-                if (b.rfind("decided", 0) == 0 || b.rfind("ext", 0) == 0) continue;
-                defaultText = b;
-                break;
-            }
-            std::istringstream names(inside.substr(0, inside.find(' ')));
-            std::string name;
-            while (std::getline(names, name, '/')) params.push_back({name, defaultText});
-            pos = close + 1;
-        }
-        if (sentence.find("transforms as for Box") != std::string::npos) {
-            for (const char* t : {"Translation", "Rotation", "Scale"}) params.push_back({t, ""});
-        }
+        if (!std::regex_match(line, m, lineForm)) continue;
+        const std::vector<SpecParam> params =
+            paragraphParams(remarks ? std::regex_replace(m[2].str(), *remarks, "") : m[2].str());
+        std::vector<SpecParam>& into = blocks[m[1].str()];
+        into.insert(into.end(), params.begin(), params.end());
     }
     return blocks;
 }
 
-// §6 adds parameters to §3's blocks in lines like "- **Fresnel** (Material): `Fresnel` 0|1 [0]. More text.":
-// the first sentence's backticked names, once parenthesised remarks (which may quote other names) are dropped.
-std::map<std::string, std::vector<SpecParam>> specFutureWork(const std::string& text) {
-    std::map<std::string, std::vector<SpecParam>> blocks;
+// §3 paragraphs look like "**Sphere** — `Material` name; `Center` [0 0 0]; `Radius` [1]. More text."
+SpecBlocks specBlocks(const std::string& text) {
+    static const std::regex kHead(R"(^\*\*(\w+)\*\* — (.*)$)");
+    return specParams(text, kHead);
+}
+
+// §6 adds parameters to §3's blocks in lines like "- **Fresnel** (Material): `Fresnel` 0|1 [0]. More text.",
+// once parenthesised remarks (which may quote other names) are dropped.
+SpecBlocks specFutureWork(const std::string& text) {
     static const std::regex kItem(R"(^- \*\*[^*]+\*\* \((\w+)\): (.*)$)");
     static const std::regex kRemark(R"( \([^()]*\))");
-    std::istringstream lines(text);
-    std::string line;
-    while (std::getline(lines, line)) {
-        std::smatch m;
-        if (!std::regex_match(line, m, kItem)) continue;
-        const std::string block = m[1].str();
-        const std::string paragraph = "**" + block + "** — " + std::regex_replace(m[2].str(), kRemark, "");
-        const auto parsed = specBlocks(paragraph);
-        if (const auto it = parsed.find(block); it != parsed.end())
-            blocks[block].insert(blocks[block].end(), it->second.begin(), it->second.end());
-    }
-    return blocks;
+    return specParams(text, kItem, &kRemark);
 }
 
 // As the reader stores them: floats. The tables' default texts are scene.h's float initialisers written with
@@ -114,7 +116,7 @@ std::vector<float> numbers(const std::string& s) {
 }
 
 void expectTablesMatch(const std::string& specPath) {
-    const std::string spec = readAll(specPath);
+    const std::string spec = test::readFileText(specPath);
     ASSERT_FALSE(spec.empty()) << specPath;
     auto blocks = specBlocks(section(spec, "## 3. Blocks", "## 4."));
     ASSERT_EQ(blocks.size(), sceneBlocks().size()) << "SPEC §3 and the table list different blocks";
@@ -171,12 +173,12 @@ TEST(BlockTable, MatchesTheSpecCopyInDocs) { expectTablesMatch(kDocsSpec); }
 // the spec it is copied from.
 TEST(BlockTable, DocsCopyOfTheSpecIsCurrent) {
     if (!std::filesystem::exists(kSharedSpec)) GTEST_SKIP() << kSharedSpec << " is absent (a fresh clone)";
-    EXPECT_EQ(readAll(kDocsSpec), readAll(kSharedSpec)) << "copy ../shared/SPEC.md to docs/SPEC.md";
+    EXPECT_EQ(test::readFileText(kDocsSpec), test::readFileText(kSharedSpec)) << "copy ../shared/SPEC.md to docs/SPEC.md";
 }
 
 TEST(BlockTable, SpecParserReadsTheExpectedShapes) {
     // Guards the test's own parser: a few facts read by eye from SPEC §3.
-    const auto blocks = specBlocks(section(readAll(kDocsSpec), "## 3. Blocks", "## 4."));
+    const auto blocks = specBlocks(section(test::readFileText(kDocsSpec), "## 3. Blocks", "## 4."));
     ASSERT_TRUE(blocks.count("AreaLight"));
     ASSERT_EQ(blocks.at("AreaLight").size(), 7u);
     EXPECT_EQ(blocks.at("AreaLight").back().name, "Subdivision");
@@ -184,7 +186,7 @@ TEST(BlockTable, SpecParserReadsTheExpectedShapes) {
     EXPECT_EQ(blocks.at("Texture").at(0).defaultText, "—");
     EXPECT_EQ(blocks.at("Mesh").size(), 5u);
     EXPECT_EQ(blocks.at("Material").size(), 13u);
-    const auto added = specFutureWork(section(readAll(kDocsSpec), "## 6.", "\n## 7."));
+    const auto added = specFutureWork(section(test::readFileText(kDocsSpec), "## 6.", "\n## 7."));
     ASSERT_TRUE(added.count("Camera") && added.count("Material"));
     ASSERT_EQ(added.at("Camera").size(), 3u);
     EXPECT_EQ(added.at("Camera").at(1).name, "FocalDistance");

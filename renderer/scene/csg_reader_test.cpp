@@ -4,18 +4,14 @@
 #include <gtest/gtest.h>
 
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
 
 using Kind = CsgNode::Kind;
 
-std::string errorsOf(const Diagnostics& d) {
-    std::string s;
-    for (const Diagnostic& x : d.items)
-        if (x.severity == Severity::Error) s += formatDiagnostic(x) + "\n";
-    return s;
-}
+std::string errorsOf(const Diagnostics& d) { return test::listedDiagnostics(d, true); }
 
 TEST(CsgReader, SeedExampleBuildsTheThesisTree) {
     Diagnostics diags;

@@ -14,12 +14,6 @@
 namespace trazo {
 namespace {
 
-std::string writeObj(const std::string& name, const std::string& text) {
-    const std::string path = test::tempPath(name);
-    std::ofstream(path) << text;
-    return path;
-}
-
 std::string firstError(const Diagnostics& d) {
     for (const Diagnostic& x : d.items)
         if (x.severity == Severity::Error) return formatDiagnostic(x);
@@ -36,7 +30,7 @@ std::vector<Tri> positionTriangles(const MeshData& m) {
 
 TEST(ObjReader, TriangleWithAllAttributes) {
     Diagnostics diags;
-    const auto mesh = readObjFile(writeObj("full.obj",
+    const auto mesh = readObjFile(test::writeTempFile("full.obj",
                                            "# a triangle\n"
                                            "o thing\ng group\ns 1\nmtllib missing.mtl\nusemtl nothing\n"
                                            "v 0 0 0\nv 1 0 0\nv 0 1 0\n"

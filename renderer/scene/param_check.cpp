@@ -45,6 +45,38 @@ ValueCheck readTimeCheck(ValueCheck check) {
     }
 }
 
+// Why x fails `check`: the words after the parameter's name, before ", got VALUE"; "" when it passes. Antialiasing
+// and NonZeroComponents, whose messages differ, are checkRange's own.
+std::string rangeProblem(ValueCheck check, double x) {
+    using C = ValueCheck;
+    switch (check) {
+        case C::Positive: return x > 0 ? "" : " must be positive";
+        case C::NonNegative: return x < 0 ? " must not be negative" : "";
+        case C::RenderSize:
+            return x < 1 || x > kMaxRenderSize ? " must be between 1 and " + std::to_string(kMaxRenderSize) : "";
+        case C::UnitInterval: return x < 0 || x > 1 ? " must be between 0 and 1" : "";
+        case C::FieldOfView: return x > 0 && x < 180 ? "" : " must be between 0 and 180 degrees (exclusive)";
+        case C::ConeAngle: return x < 0 || x > 180 ? " must be between 0 and 180 degrees" : "";
+        case C::Flag: return x != 0 && x != 1 ? " must be 0 or 1" : "";
+        case C::Dispersion:
+            return x < 0 || x > kMaxDispersion ? " must be between 0 and 20 (an Abbe number of at least 1)" : "";
+        case C::Radius:
+            if (!(x > 0)) return " must be positive";
+            // As stored: "1e19" is kMaxRadius.
+            return float(x) > kMaxRadius ? " must be at most 1e19 (its square must stay inside single precision)" : "";
+        case C::LightPosition:
+            return std::fabs(float(x)) > kMaxLightCoordinate
+                       ? " must be within 1e18 of the origin in each coordinate (the squared distance to the light "
+                         "must stay inside single precision)"
+                       : "";
+        case C::Colour:
+            return std::fabs(float(x)) > kMaxColour
+                       ? " components must be within ±1e12 (so that a pixel's sums stay inside single precision)"
+                       : "";
+        default: return "";
+    }
+}
+
 // The range check of `info` on checked values; reports and returns false when it fails (warnings pass).
 bool checkRange(const ParamInfo& info, const ParameterLine& line, size_t offset, ParamValue& v,
                 Diagnostics& diags) {
@@ -55,80 +87,14 @@ bool checkRange(const ParamInfo& info, const ParameterLine& line, size_t offset,
     auto text = [&](int i) { return line.values[offset + size_t(i)].text; };
     for (int i = 0; i < info.count; ++i) {
         const double x = v.numbers[size_t(i)];
-        switch (check) {
-            case C::Positive:
-                if (!(x > 0)) return diags.error(at(i), name + " must be positive, got " + text(i)), false;
-                break;
-            case C::NonNegative:
-                if (x < 0) return diags.error(at(i), name + " must not be negative, got " + text(i)), false;
-                break;
-            case C::RenderSize:
-                if (x < 1 || x > kMaxRenderSize) {
-                    return diags.error(at(i), name + " must be between 1 and " + std::to_string(kMaxRenderSize) +
-                                                  ", got " + text(i)),
-                           false;
-                }
-                break;
-            case C::Antialiasing:
-                if (x != 1 && x != 4 && x != 16) {
-                    diags.warning(at(i), name + " must be 1, 4 or 16, got " + text(i) + "; using 1");
-                    v.numbers[size_t(i)] = 1;
-                }
-                break;
-            case C::NonZeroComponents:
-                if (x == 0) {
-                    return diags.error(at(i), name + " component must not be zero (a singular transform)"), false;
-                }
-                break;
-            case C::UnitInterval:
-                if (x < 0 || x > 1) return diags.error(at(i), name + " must be between 0 and 1, got " + text(i)), false;
-                break;
-            case C::FieldOfView:
-                if (!(x > 0 && x < 180)) {
-                    return diags.error(at(i), name + " must be between 0 and 180 degrees (exclusive), got " + text(i)),
-                           false;
-                }
-                break;
-            case C::ConeAngle:
-                if (x < 0 || x > 180) {
-                    return diags.error(at(i), name + " must be between 0 and 180 degrees, got " + text(i)), false;
-                }
-                break;
-            case C::Flag:
-                if (x != 0 && x != 1) return diags.error(at(i), name + " must be 0 or 1, got " + text(i)), false;
-                break;
-            case C::Dispersion:
-                if (x < 0 || x > kMaxDispersion) {
-                    return diags.error(at(i), name + " must be between 0 and 20 (an Abbe number of at least 1), got " +
-                                                  text(i)),
-                           false;
-                }
-                break;
-            case C::Radius:
-                if (!(x > 0)) return diags.error(at(i), name + " must be positive, got " + text(i)), false;
-                if (float(x) > kMaxRadius) {  // as stored: "1e19" is kMaxRadius
-                    return diags.error(at(i), name + " must be at most 1e19 (its square must stay inside single "
-                                                     "precision), got " + text(i)),
-                           false;
-                }
-                break;
-            case C::LightPosition:
-                if (std::fabs(float(x)) > kMaxLightCoordinate) {
-                    return diags.error(at(i), name + " must be within 1e18 of the origin in each coordinate (the "
-                                                     "squared distance to the light must stay inside single "
-                                                     "precision), got " + text(i)),
-                           false;
-                }
-                break;
-            case C::Colour:
-                if (std::fabs(float(x)) > kMaxColour) {
-                    return diags.error(at(i), name + " components must be within ±1e12 (so that a pixel's sums stay "
-                                                     "inside single precision), got " + text(i)),
-                           false;
-                }
-                break;
-            default: break;
+        if (check == C::Antialiasing && x != 1 && x != 4 && x != 16) {
+            diags.warning(at(i), name + " must be 1, 4 or 16, got " + text(i) + "; using 1");
+            v.numbers[size_t(i)] = 1;
         }
+        if (check == C::NonZeroComponents && x == 0)
+            return diags.error(at(i), name + " component must not be zero (a singular transform)"), false;
+        if (const std::string why = rangeProblem(check, x); !why.empty())
+            return diags.error(at(i), name + why + ", got " + text(i)), false;
     }
     if (check == C::NonZeroVector || check == C::RotationAxis) {
         if (v.numbers[0] == 0 && v.numbers[1] == 0 && v.numbers[2] == 0) {

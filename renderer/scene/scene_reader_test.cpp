@@ -15,6 +15,7 @@
 #include "fetched_assets.h"
 #include "scene/csg_reader.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
@@ -30,17 +31,109 @@ Result readText(const std::string& text, const std::string& path = "t.scene") {
     return r;
 }
 
-std::string listed(const Diagnostics& d, bool errorsOnly = false) {
-    std::string s;
-    for (const Diagnostic& x : d.items)
-        if (!errorsOnly || x.severity == Severity::Error) s += formatDiagnostic(x) + "\n";
-    return s;
-}
+std::string listed(const Diagnostics& d, bool errorsOnly = false) { return test::listedDiagnostics(d, errorsOnly); }
 
 void expectVec(Vec3 v, float x, float y, float z) {
     EXPECT_FLOAT_EQ(v.x, x);
     EXPECT_FLOAT_EQ(v.y, y);
     EXPECT_FLOAT_EQ(v.z, z);
+}
+void expectVec(Vec3 v, Vec3 want) { expectVec(v, want.x, want.y, want.z); }
+
+// What a scene file sets in each block, field by field (where it was written aside), and the checks of a block
+// as read against them.
+struct SettingsValues {
+    Vec3 background;
+    int width, height, reflectionQuality, reflectionSteps, indirectQuality;
+    float colorBleeding;
+    int antialiasing;
+};
+
+void expectSettings(const SceneSettings& got, const SettingsValues& want) {
+    expectVec(got.backgroundColor, want.background);
+    EXPECT_EQ(got.renderWidth, want.width);
+    EXPECT_EQ(got.renderHeight, want.height);
+    EXPECT_EQ(got.reflectionQuality, want.reflectionQuality);
+    EXPECT_EQ(got.reflectionSteps, want.reflectionSteps);
+    EXPECT_EQ(got.indirectQuality, want.indirectQuality);
+    EXPECT_FLOAT_EQ(got.colorBleeding, want.colorBleeding);
+    EXPECT_EQ(got.antialiasing, want.antialiasing);
+}
+
+struct CameraValues {
+    Vec3 pov, poi;
+    float fov;
+};
+
+void expectCamera(const Camera& got, const CameraValues& want) {
+    expectVec(got.pov, want.pov);
+    expectVec(got.poi, want.poi);
+    EXPECT_FLOAT_EQ(got.fovDegrees, want.fov);
+}
+
+// The thesis's Material parameters but Name and the textures.
+struct MaterialValues {
+    Vec3 diffuse, specular, emissive;
+    float roughness, opacity, refractionIndex, reflectionAngleDegrees, reflectionAmount;
+};
+
+void expectMaterial(const Material& got, const MaterialValues& want) {
+    expectVec(got.diffuseColor, want.diffuse);
+    expectVec(got.specularColor, want.specular);
+    expectVec(got.emissiveColor, want.emissive);
+    EXPECT_FLOAT_EQ(got.roughness, want.roughness);
+    EXPECT_FLOAT_EQ(got.opacity, want.opacity);
+    EXPECT_FLOAT_EQ(got.refractionIndex, want.refractionIndex);
+    EXPECT_FLOAT_EQ(got.reflectionAngleDegrees, want.reflectionAngleDegrees);
+    EXPECT_FLOAT_EQ(got.reflectionAmount, want.reflectionAmount);
+}
+
+struct SphereValues {
+    int32_t material;
+    Vec3 center;
+    float radius;
+};
+
+void expectSphere(const Sphere& got, const SphereValues& want) {
+    EXPECT_EQ(got.material, want.material);
+    expectVec(got.center, want.center);
+    EXPECT_FLOAT_EQ(got.radius, want.radius);
+}
+
+struct CylinderValues {
+    int32_t material;
+    Vec3 base, axis;
+    float height, radius;
+};
+
+void expectCylinder(const Cylinder& got, const CylinderValues& want) {
+    EXPECT_EQ(got.material, want.material);
+    expectVec(got.base, want.base);
+    expectVec(got.axis, want.axis);
+    EXPECT_FLOAT_EQ(got.height, want.height);
+    EXPECT_FLOAT_EQ(got.radius, want.radius);
+}
+
+struct AreaLightValues {
+    Vec3 color, position, direction;
+    float rollAngle, width, height;
+    int subdivisionX, subdivisionY;
+};
+
+void expectAreaLight(const AreaLight& got, const AreaLightValues& want) {
+    expectVec(got.color, want.color);
+    expectVec(got.position, want.position);
+    expectVec(got.direction, want.direction);
+    EXPECT_FLOAT_EQ(got.rollAngle, want.rollAngle);
+    EXPECT_FLOAT_EQ(got.width, want.width);
+    EXPECT_FLOAT_EQ(got.height, want.height);
+    EXPECT_EQ(got.subdivisionX, want.subdivisionX);
+    EXPECT_EQ(got.subdivisionY, want.subdivisionY);
+}
+
+void expectTransform(const TransformStep& got, TransformStep::Kind kind, Vec3 value) {
+    EXPECT_EQ(got.kind, kind);
+    expectVec(got.value, value);
 }
 
 void writeFile(const std::string& path, const std::string& text) {
@@ -58,14 +151,8 @@ void writePng(const std::string& path) {
 const char* const kTriangleWithUvs = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
 const char* const kTinyCsg = "Sphere {\n}\nBox {\n}\nUnion {\n LeftType Sphere\n LeftIndex 0\n RightType Box\n RightIndex 0\n}\n";
 
-TEST(SceneReader, EveryParameterReachesItsField) {
-    const std::string dir = test::tempPath("every");
-    writePng(dir + "/a.png");
-    writePng(dir + "/b.png");
-    writeFile(dir + "/t.obj", kTriangleWithUvs);
-    writeFile(dir + "/t.csg", kTinyCsg);
-    const std::string scene = dir + "/every.scene";
-    writeFile(scene, R"(SceneSettings
+// Every block with every thesis parameter given (textures a.png and b.png, t.obj and t.csg beside it).
+const char* const kEveryParameterScene = R"(SceneSettings
 {
     BackgroundColor 0.1 0.2 0.3
     RenderWidth 640
@@ -160,25 +247,10 @@ AreaLight
     Height 3
     Subdivision 4 6
 }
-)");
-    Diagnostics diags;
-    const Scene s = readSceneFile(scene, diags);
-    ASSERT_TRUE(diags.items.empty()) << listed(diags);
-    EXPECT_EQ(s.path, scene);
+)";
 
-    expectVec(s.settings.backgroundColor, 0.1f, 0.2f, 0.3f);
-    EXPECT_EQ(s.settings.renderWidth, 640);
-    EXPECT_EQ(s.settings.renderHeight, 480);
-    EXPECT_EQ(s.settings.reflectionQuality, 2);
-    EXPECT_EQ(s.settings.reflectionSteps, 4);
-    EXPECT_EQ(s.settings.indirectQuality, 5);
-    EXPECT_FLOAT_EQ(s.settings.colorBleeding, 2.5f);
-    EXPECT_EQ(s.settings.antialiasing, 16);
-
-    expectVec(s.camera.pov, 1, 2, 3);
-    expectVec(s.camera.poi, 4, 5, 6);
-    EXPECT_FLOAT_EQ(s.camera.fovDegrees, 30);
-
+// kEveryParameterScene's textures and its material, read from `dir`.
+void expectEveryTextureAndMaterial(const Scene& s, const std::string& dir) {
     ASSERT_EQ(s.textures.size(), 2u);
     EXPECT_EQ(s.textures[0].name, "texA");
     EXPECT_EQ(s.textures[0].source, dir + "/a.png");
@@ -190,44 +262,34 @@ AreaLight
     ASSERT_EQ(s.materials.size(), 1u);
     const Material& m = s.materials[0];
     EXPECT_EQ(m.name, "m");
-    expectVec(m.diffuseColor, 0.1f, 0.2f, 0.3f);
-    expectVec(m.specularColor, 0.4f, 0.5f, 0.6f);
-    expectVec(m.emissiveColor, 0.7f, 0.8f, 0.9f);
+    expectMaterial(m, {.diffuse = {0.1f, 0.2f, 0.3f}, .specular = {0.4f, 0.5f, 0.6f}, .emissive = {0.7f, 0.8f, 0.9f},
+                       .roughness = 0.25f, .opacity = 0.75f, .refractionIndex = 1.5f, .reflectionAngleDegrees = 30,
+                       .reflectionAmount = 0.6f});
     EXPECT_EQ(m.textures[kDiffuseTexture], 0);
     EXPECT_EQ(m.textures[kSpecularTexture], 1);
     EXPECT_EQ(m.textures[kEmissiveTexture], 0);
     EXPECT_EQ(m.textures[kNormalTexture], 1);
-    EXPECT_FLOAT_EQ(m.roughness, 0.25f);
-    EXPECT_FLOAT_EQ(m.opacity, 0.75f);
-    EXPECT_FLOAT_EQ(m.refractionIndex, 1.5f);
-    EXPECT_FLOAT_EQ(m.reflectionAngleDegrees, 30);
-    EXPECT_FLOAT_EQ(m.reflectionAmount, 0.6f);
     EXPECT_EQ(m.where.line, 28);
+}
 
+// kEveryParameterScene's objects, the file `scene` read from `dir`.
+void expectEveryObject(const Scene& s, const std::string& dir, const std::string& scene) {
+    using Kind = TransformStep::Kind;
     ASSERT_EQ(s.spheres.size(), 1u);
-    EXPECT_EQ(s.spheres[0].material, 0);
-    expectVec(s.spheres[0].center, 1, 2, 3);
-    EXPECT_FLOAT_EQ(s.spheres[0].radius, 4);
+    expectSphere(s.spheres[0], {.material = 0, .center = {1, 2, 3}, .radius = 4});
     EXPECT_EQ(s.spheres[0].where.line, 44);
     EXPECT_EQ(s.spheres[0].where.file, scene);
 
     ASSERT_EQ(s.boxes.size(), 1u);
     EXPECT_EQ(s.boxes[0].material, 0);
     ASSERT_EQ(s.boxes[0].transforms.size(), 3u);
-    EXPECT_EQ(s.boxes[0].transforms[0].kind, TransformStep::Kind::Translation);
-    expectVec(s.boxes[0].transforms[0].value, 1, 2, 3);
-    EXPECT_EQ(s.boxes[0].transforms[1].kind, TransformStep::Kind::Rotation);
-    expectVec(s.boxes[0].transforms[1].value, 0, 1, 0);
+    expectTransform(s.boxes[0].transforms[0], Kind::Translation, {1, 2, 3});
+    expectTransform(s.boxes[0].transforms[1], Kind::Rotation, {0, 1, 0});
     EXPECT_FLOAT_EQ(s.boxes[0].transforms[1].angle, 0.5f);
-    EXPECT_EQ(s.boxes[0].transforms[2].kind, TransformStep::Kind::Scale);
-    expectVec(s.boxes[0].transforms[2].value, 2, 3, 4);
+    expectTransform(s.boxes[0].transforms[2], Kind::Scale, {2, 3, 4});
 
     ASSERT_EQ(s.cylinders.size(), 1u);
-    EXPECT_EQ(s.cylinders[0].material, 0);
-    expectVec(s.cylinders[0].base, 1, 2, 3);
-    expectVec(s.cylinders[0].axis, 1, 0, 0);
-    EXPECT_FLOAT_EQ(s.cylinders[0].height, 5);
-    EXPECT_FLOAT_EQ(s.cylinders[0].radius, 0.5f);
+    expectCylinder(s.cylinders[0], {.material = 0, .base = {1, 2, 3}, .axis = {1, 0, 0}, .height = 5, .radius = 0.5f});
 
     ASSERT_EQ(s.csgs.size(), 1u);
     EXPECT_EQ(s.csgs[0].material, 0);
@@ -244,23 +306,34 @@ AreaLight
     ASSERT_TRUE(s.meshes[0].data);
     EXPECT_EQ(s.meshes[0].data->corners.size(), 3u);
     ASSERT_EQ(s.meshes[0].transforms.size(), 3u);
-    EXPECT_EQ(s.meshes[0].transforms[0].kind, TransformStep::Kind::Scale);
-    EXPECT_EQ(s.meshes[0].transforms[2].kind, TransformStep::Kind::Translation);
+    EXPECT_EQ(s.meshes[0].transforms[0].kind, Kind::Scale);
+    EXPECT_EQ(s.meshes[0].transforms[2].kind, Kind::Translation);
+}
 
+TEST(SceneReader, EveryParameterReachesItsField) {
+    const std::string dir = test::tempPath("every");
+    writePng(dir + "/a.png");
+    writePng(dir + "/b.png");
+    writeFile(dir + "/t.obj", kTriangleWithUvs);
+    writeFile(dir + "/t.csg", kTinyCsg);
+    const std::string scene = dir + "/every.scene";
+    writeFile(scene, kEveryParameterScene);
+    Diagnostics diags;
+    const Scene s = readSceneFile(scene, diags);
+    ASSERT_TRUE(diags.items.empty()) << listed(diags);
+    EXPECT_EQ(s.path, scene);
+    expectSettings(s.settings, {.background = {0.1f, 0.2f, 0.3f}, .width = 640, .height = 480, .reflectionQuality = 2,
+                                .reflectionSteps = 4, .indirectQuality = 5, .colorBleeding = 2.5f, .antialiasing = 16});
+    expectCamera(s.camera, {.pov = {1, 2, 3}, .poi = {4, 5, 6}, .fov = 30});
+    expectEveryTextureAndMaterial(s, dir);
+    expectEveryObject(s, dir, scene);
     ASSERT_EQ(s.pointLights.size(), 1u);
     expectVec(s.pointLights[0].position, 1, 2, 3);
     expectVec(s.pointLights[0].color, 0.5f, 0.6f, 0.7f);
-
     ASSERT_EQ(s.areaLights.size(), 1u);
-    const AreaLight& a = s.areaLights[0];
-    expectVec(a.color, 0.1f, 0.2f, 0.3f);
-    expectVec(a.position, 4, 5, 6);
-    expectVec(a.direction, 0, 0, -1);
-    EXPECT_FLOAT_EQ(a.rollAngle, 0.5f);
-    EXPECT_FLOAT_EQ(a.width, 2);
-    EXPECT_FLOAT_EQ(a.height, 3);
-    EXPECT_EQ(a.subdivisionX, 4);
-    EXPECT_EQ(a.subdivisionY, 6);
+    expectAreaLight(s.areaLights[0], {.color = {0.1f, 0.2f, 0.3f}, .position = {4, 5, 6}, .direction = {0, 0, -1},
+                                      .rollAngle = 0.5f, .width = 2, .height = 3, .subdivisionX = 4,
+                                      .subdivisionY = 6});
 }
 
 TEST(SceneReader, EmptyBlocksTakeTheSpecDefaults) {
@@ -269,52 +342,27 @@ TEST(SceneReader, EmptyBlocksTakeTheSpecDefaults) {
         "PointLight {\n}\nAreaLight {\n}\n");
     EXPECT_FALSE(r.diags.hasErrors()) << listed(r.diags);
     const Scene& s = r.scene;
-    expectVec(s.settings.backgroundColor, 0, 0, 0);
-    EXPECT_EQ(s.settings.renderWidth, 512);
-    EXPECT_EQ(s.settings.renderHeight, 512);
-    EXPECT_EQ(s.settings.reflectionQuality, 3);
-    EXPECT_EQ(s.settings.reflectionSteps, 1);
-    EXPECT_EQ(s.settings.indirectQuality, 3);
-    EXPECT_FLOAT_EQ(s.settings.colorBleeding, 1.0f);
-    EXPECT_EQ(s.settings.antialiasing, 1);
-    expectVec(s.camera.pov, 0, 0, 10);
-    expectVec(s.camera.poi, 0, 0, 0);
-    EXPECT_FLOAT_EQ(s.camera.fovDegrees, 45);
+    expectSettings(s.settings, {.background = {0, 0, 0}, .width = 512, .height = 512, .reflectionQuality = 3,
+                                .reflectionSteps = 1, .indirectQuality = 3, .colorBleeding = 1.0f, .antialiasing = 1});
+    expectCamera(s.camera, {.pov = {0, 0, 10}, .poi = {0, 0, 0}, .fov = 45});
     ASSERT_EQ(s.materials.size(), 1u);
-    const Material& m = s.materials[0];
-    expectVec(m.diffuseColor, 0.9f, 0.9f, 0.9f);
-    expectVec(m.specularColor, 0.8f, 0.8f, 0.8f);
-    expectVec(m.emissiveColor, 0, 0, 0);
-    EXPECT_EQ(m.textures, noTextures());
-    EXPECT_FLOAT_EQ(m.roughness, 0.5f);
-    EXPECT_FLOAT_EQ(m.opacity, 1);
-    EXPECT_FLOAT_EQ(m.refractionIndex, 1);
-    EXPECT_FLOAT_EQ(m.reflectionAngleDegrees, 0);
-    EXPECT_FLOAT_EQ(m.reflectionAmount, 0);
+    expectMaterial(s.materials[0], {.diffuse = {0.9f, 0.9f, 0.9f}, .specular = {0.8f, 0.8f, 0.8f},
+                                    .emissive = {0, 0, 0}, .roughness = 0.5f, .opacity = 1, .refractionIndex = 1,
+                                    .reflectionAngleDegrees = 0, .reflectionAmount = 0});
+    EXPECT_EQ(s.materials[0].textures, noTextures());
     ASSERT_EQ(s.spheres.size(), 1u);
-    EXPECT_EQ(s.spheres[0].material, kDefaultMaterial);
-    expectVec(s.spheres[0].center, 0, 0, 0);
-    EXPECT_FLOAT_EQ(s.spheres[0].radius, 1);
+    expectSphere(s.spheres[0], {.material = kDefaultMaterial, .center = {0, 0, 0}, .radius = 1});
     ASSERT_EQ(s.boxes.size(), 1u);
     EXPECT_TRUE(s.boxes[0].transforms.empty());
     ASSERT_EQ(s.cylinders.size(), 1u);
-    expectVec(s.cylinders[0].base, 0, 0, 0);
-    expectVec(s.cylinders[0].axis, 0, 1, 0);
-    EXPECT_FLOAT_EQ(s.cylinders[0].height, 1);
-    EXPECT_FLOAT_EQ(s.cylinders[0].radius, 1);
+    expectCylinder(s.cylinders[0],
+                   {.material = kDefaultMaterial, .base = {0, 0, 0}, .axis = {0, 1, 0}, .height = 1, .radius = 1});
     ASSERT_EQ(s.pointLights.size(), 1u);
     expectVec(s.pointLights[0].position, 0, 0, 0);
     expectVec(s.pointLights[0].color, 1, 1, 1);
     ASSERT_EQ(s.areaLights.size(), 1u);
-    const AreaLight& a = s.areaLights[0];
-    expectVec(a.color, 1, 1, 1);
-    expectVec(a.position, 0, 0, 0);
-    expectVec(a.direction, 0, -1, 0);
-    EXPECT_FLOAT_EQ(a.rollAngle, 0);
-    EXPECT_FLOAT_EQ(a.width, 1);
-    EXPECT_FLOAT_EQ(a.height, 1);
-    EXPECT_EQ(a.subdivisionX, 5);
-    EXPECT_EQ(a.subdivisionY, 5);
+    expectAreaLight(s.areaLights[0], {.color = {1, 1, 1}, .position = {0, 0, 0}, .direction = {0, -1, 0},
+                                      .rollAngle = 0, .width = 1, .height = 1, .subdivisionX = 5, .subdivisionY = 5});
 }
 
 TEST(SceneReader, AnEmptyFileIsTheDefaultScene) {

@@ -117,6 +117,35 @@ ParamSpec<ObjectDraft<Object>> sourceRow(std::string_view doc) {
                                    &ObjectDraft<Object>::sourceAt);
 }
 
+// Each object kind's own rows, and for a kind read from a file what its Source names.
+template <class Object>
+std::vector<ParamSpec<Object>> ownRows();
+template <>
+std::vector<ParamSpec<Sphere>> ownRows() { return sphereRows<Sphere>(); }
+template <>
+std::vector<ParamSpec<Box>> ownRows() { return transformRows<Box>(); }
+template <>
+std::vector<ParamSpec<Cylinder>> ownRows() { return cylinderRows<Cylinder>(); }
+template <>
+std::vector<ParamSpec<Csg>> ownRows() { return transformRows<Csg>(); }
+template <>
+std::vector<ParamSpec<Mesh>> ownRows() { return transformRows<Mesh>(); }
+template <class Object>
+constexpr std::string_view kSourceDoc = "";
+template <>
+constexpr std::string_view kSourceDoc<Csg> = ".csg file with the tree";
+template <>
+constexpr std::string_view kSourceDoc<Mesh> = ".obj file";
+
+// An object block's rows: Material, Source for a kind read from a file, then the kind's own.
+template <class Object>
+std::vector<ParamSpec<ObjectDraft<Object>>> objectRows() {
+    std::vector<ParamSpec<ObjectDraft<Object>>> named{materialRow<Object>()};
+    if constexpr (Object::kReadFromFile) named.push_back(sourceRow<Object>(kSourceDoc<Object>));
+    return withDefaults(
+        concat<ParamSpec<ObjectDraft<Object>>>({named, lift(&ObjectDraft<Object>::object, ownRows<Object>())}));
+}
+
 template <class Target>
 BlockInfo infoOf(std::string_view name, std::span<const ParamSpec<Target>> table) {
     BlockInfo b{name, {}};
@@ -215,45 +244,14 @@ std::span<const ParamSpec<MaterialDraft>> materialTable() {
     return rows;
 }
 
-template <>
-std::span<const ParamSpec<ObjectDraft<Sphere>>> objectTable<Sphere>() {
-    using Draft = ObjectDraft<Sphere>;
-    static const std::vector<ParamSpec<Draft>> rows =
-        withDefaults(concat<ParamSpec<Draft>>({{materialRow<Sphere>()}, lift(&Draft::object, sphereRows<Sphere>())}));
-    return rows;
-}
-
-template <>
-std::span<const ParamSpec<ObjectDraft<Box>>> objectTable<Box>() {
-    using Draft = ObjectDraft<Box>;
-    static const std::vector<ParamSpec<Draft>> rows =
-        withDefaults(concat<ParamSpec<Draft>>({{materialRow<Box>()}, lift(&Draft::object, transformRows<Box>())}));
-    return rows;
-}
-
-template <>
-std::span<const ParamSpec<ObjectDraft<Cylinder>>> objectTable<Cylinder>() {
-    using Draft = ObjectDraft<Cylinder>;
-    static const std::vector<ParamSpec<Draft>> rows =
-        withDefaults(concat<ParamSpec<Draft>>({{materialRow<Cylinder>()}, lift(&Draft::object, cylinderRows<Cylinder>())}));
-    return rows;
-}
-
-template <>
-std::span<const ParamSpec<ObjectDraft<Csg>>> objectTable<Csg>() {
-    using Draft = ObjectDraft<Csg>;
-    static const std::vector<ParamSpec<Draft>> rows = withDefaults(concat<ParamSpec<Draft>>(
-        {{materialRow<Csg>(), sourceRow<Csg>(".csg file with the tree")}, lift(&Draft::object, transformRows<Csg>())}));
-    return rows;
-}
-
-template <>
-std::span<const ParamSpec<ObjectDraft<Mesh>>> objectTable<Mesh>() {
-    using Draft = ObjectDraft<Mesh>;
-    static const std::vector<ParamSpec<Draft>> rows = withDefaults(
-        concat<ParamSpec<Draft>>({{materialRow<Mesh>(), sourceRow<Mesh>(".obj file")}, lift(&Draft::object, transformRows<Mesh>())}));
-    return rows;
-}
+#define TRAZO_X(Shape, array, Kind, keyword)                                              \
+    template <>                                                                           \
+    std::span<const ParamSpec<ObjectDraft<Kind>>> objectTable<Kind>() {                   \
+        static const std::vector<ParamSpec<ObjectDraft<Kind>>> rows = objectRows<Kind>(); \
+        return rows;                                                                      \
+    }
+TRAZO_OBJECT_KINDS(TRAZO_X)
+#undef TRAZO_X
 
 template <>
 std::span<const ParamSpec<PointLight>> lightTable<PointLight>() {

@@ -9,16 +9,12 @@
 
 #include "scene/scene_reader.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
 
-std::string listed(const Diagnostics& d) {
-    std::string s;
-    for (const Diagnostic& x : d.items)
-        if (x.severity == Severity::Error) s += formatDiagnostic(x) + "\n";
-    return s;
-}
+std::string listed(const Diagnostics& d) { return test::listedDiagnostics(d, true); }
 
 // Bit-for-bit equality of floats (the writer prints enough digits for it).
 bool same(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
@@ -31,6 +27,22 @@ void expectSameTransforms(const std::vector<TransformStep>& a, const std::vector
         EXPECT_EQ(a[i].kind, b[i].kind) << i;
         EXPECT_TRUE(same(a[i].value, b[i].value)) << i;
         EXPECT_TRUE(same(a[i].angle, b[i].angle)) << i;
+    }
+}
+
+// What the file of a CSG or mesh object gave: its tree's node count, its mesh's corner count; -1 when not read.
+long partCount(const Csg& c) { return c.tree ? long(c.tree->nodes.size()) : -1; }
+long partCount(const Mesh& m) { return m.data ? long(m.data->corners.size()) : -1; }
+
+template <class Object>
+void expectSameFileObjects(const std::vector<Object>& a, const std::vector<Object>& b) {
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].material, b[i].material);
+        EXPECT_TRUE(sameFile(a[i].source, b[i].source));
+        expectSameTransforms(a[i].transforms, b[i].transforms);
+        ASSERT_GE(partCount(b[i]), 0);
+        EXPECT_EQ(partCount(a[i]), partCount(b[i]));
     }
 }
 
@@ -79,22 +91,8 @@ void expectSameScene(const Scene& a, const Scene& b) {
         EXPECT_EQ(x.material, y.material);
         EXPECT_TRUE(same(x.base, y.base) && same(x.axis, y.axis) && same(x.height, y.height) && same(x.radius, y.radius));
     }
-    ASSERT_EQ(a.csgs.size(), b.csgs.size());
-    for (size_t i = 0; i < a.csgs.size(); ++i) {
-        EXPECT_EQ(a.csgs[i].material, b.csgs[i].material);
-        EXPECT_TRUE(sameFile(a.csgs[i].source, b.csgs[i].source));
-        expectSameTransforms(a.csgs[i].transforms, b.csgs[i].transforms);
-        ASSERT_TRUE(b.csgs[i].tree);
-        EXPECT_EQ(a.csgs[i].tree->nodes.size(), b.csgs[i].tree->nodes.size());
-    }
-    ASSERT_EQ(a.meshes.size(), b.meshes.size());
-    for (size_t i = 0; i < a.meshes.size(); ++i) {
-        EXPECT_EQ(a.meshes[i].material, b.meshes[i].material);
-        EXPECT_TRUE(sameFile(a.meshes[i].source, b.meshes[i].source));
-        expectSameTransforms(a.meshes[i].transforms, b.meshes[i].transforms);
-        ASSERT_TRUE(b.meshes[i].data);
-        EXPECT_EQ(a.meshes[i].data->corners.size(), b.meshes[i].data->corners.size());
-    }
+    expectSameFileObjects(a.csgs, b.csgs);
+    expectSameFileObjects(a.meshes, b.meshes);
     ASSERT_EQ(a.pointLights.size(), b.pointLights.size());
     for (size_t i = 0; i < a.pointLights.size(); ++i) {
         EXPECT_TRUE(same(a.pointLights[i].position, b.pointLights[i].position));

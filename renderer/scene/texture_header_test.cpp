@@ -6,27 +6,11 @@
 #include <FreeImage.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "scene/texture_reader.h"
 #include "test_paths.h"
 
 namespace trazo {
 namespace {
-
-std::string fileBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-std::string writeBytes(const std::string& name, const std::string& bytes) {
-    const std::string path = test::tempPath(name);
-    std::ofstream(path, std::ios::binary) << bytes;
-    return path;
-}
 
 // A 5 × 3 image in `format`, saved by FreeImage (float RGB for the HDR formats).
 std::string writeImage(const std::string& name, FREE_IMAGE_FORMAT format) {
@@ -50,7 +34,7 @@ TEST(TextureHeader, EveryAcceptedFormatReadsItsSize) {
         const std::string path = writeImage(c.name, c.fif);
         TextureHeader header{};
         std::string why;
-        ASSERT_TRUE(readTextureHeader(fileBytes(path), path, header, why)) << c.name << ": " << why;
+        ASSERT_TRUE(readTextureHeader(test::readFileText(path), path, header, why)) << c.name << ": " << why;
         EXPECT_EQ(header.format, c.format) << c.name;
         EXPECT_EQ(header.width, 5u) << c.name;
         EXPECT_EQ(header.height, 3u) << c.name;
@@ -64,7 +48,7 @@ TEST(TextureHeader, EveryAcceptedFormatReadsItsSize) {
 
 // The refusal of `bytes` (saved as `name`): at the Source line, naming the file, with `reason` in it.
 void expectRefused(const std::string& name, const std::string& bytes, const std::string& reason) {
-    const std::string path = writeBytes(name, bytes);
+    const std::string path = test::writeTempFile(name, bytes);
     TextureHeader header{};
     std::string why;
     EXPECT_FALSE(readTextureHeader(bytes, path, header, why)) << name;
@@ -91,8 +75,8 @@ TEST(TextureHeader, OtherFormatsAreRefusedBeforeDecoding) {
     expectRefused("t.png", "just text", "not a PNG, JPEG");
     // TGA and Radiance HDR, even well formed: FreeImage's decoders crashed on fuzzed ones within seconds
     // (bench/fuzz/regressions/texture/).
-    expectRefused("ok.tga", fileBytes(writeImage("w.tga", FIF_TARGA)), "a TGA file");
-    expectRefused("ok.hdr", fileBytes(writeImage("w.hdr", FIF_HDR)), "a Radiance HDR file");
+    expectRefused("ok.tga", test::readFileText(writeImage("w.tga", FIF_TARGA)), "a TGA file");
+    expectRefused("ok.hdr", test::readFileText(writeImage("w.hdr", FIF_HDR)), "a Radiance HDR file");
 }
 
 TEST(TextureHeader, AbsurdOrDamagedHeadersAreRefused) {
@@ -112,7 +96,7 @@ TEST(TextureHeader, AbsurdOrDamagedHeadersAreRefused) {
     expectRefused("neg.bmp", bmp, "claims 0 × 2");
     // A PFM that claims too much, and EXR headers OpenEXR would read past: cut short, and a float of size 0.
     expectRefused("big.pfm", "PF\n100000 100000\n-1\n", "claims 100000 × 100000");
-    const std::string exr = fileBytes(writeImage("w.exr", FIF_EXR));
+    const std::string exr = test::readFileText(writeImage("w.exr", FIF_EXR));
     expectRefused("cut.exr", exr.substr(0, exr.size() / 3), "damaged EXR header");
     expectRefused("tableless.exr", exr.substr(0, exr.find("\0\0", 8) + 1), "damaged EXR header");
     // A channel list OpenEXR would read out of step with the file: a subsampled first channel, and the list
@@ -130,10 +114,10 @@ TEST(TextureHeader, AbsurdOrDamagedHeadersAreRefused) {
 // A valid header over pixels that do not match it is still FreeImage's to refuse, which it must do cleanly.
 TEST(TextureHeader, TruncatedPixelsAreReportedNotCrashedOn) {
     const std::string path = writeImage("whole.png", FIF_PNG);
-    const std::string bytes = fileBytes(path);
+    const std::string bytes = test::readFileText(path);
     for (size_t keep : {size_t(33), bytes.size() / 2, bytes.size() - 12}) {
         Diagnostics diags;
-        const std::string cut = writeBytes("cut" + std::to_string(keep) + ".png", bytes.substr(0, keep));
+        const std::string cut = test::writeTempFile("cut" + std::to_string(keep) + ".png", bytes.substr(0, keep));
         EXPECT_FALSE(readTextureImage(cut, {"t.scene", 2, 0}, diags)) << keep;
         EXPECT_EQ(diags.items.size(), 1u) << keep;
     }

@@ -4,26 +4,32 @@
 #include <FreeImage.h>
 #include <gtest/gtest.h>
 
-#include <fstream>
+#include <memory>
 
 #include "test_paths.h"
 
 namespace trazo {
 namespace {
 
-// A 2x2 PNG: bottom-left red, bottom-right green, top-left blue, top-right grey 128.
+// A 2x2 image: bottom-left red, bottom-right green, top-left blue, top-right grey 128.
 // FreeImage's y = 0 is the bottom scanline.
-std::string writeTinyPng(const std::string& name) {
-    const std::string path = test::tempPath(name);
+FIBITMAP* tinyBitmap() {
     FIBITMAP* bm = FreeImage_Allocate(2, 2, 24);
     RGBQUAD red{0, 0, 255, 0}, green{0, 255, 0, 0}, blue{255, 0, 0, 0}, grey{128, 128, 128, 0};  // B, G, R, A
     FreeImage_SetPixelColor(bm, 0, 0, &red);
     FreeImage_SetPixelColor(bm, 1, 0, &green);
     FreeImage_SetPixelColor(bm, 0, 1, &blue);
     FreeImage_SetPixelColor(bm, 1, 1, &grey);
-    EXPECT_TRUE(FreeImage_Save(FIF_PNG, bm, path.c_str(), 0));
+    return bm;
+}
+
+// Saves `bm` (and frees it) as tempPath(name) in `format`, and reads that back as a texture named at t.scene:3.
+std::shared_ptr<const TextureImage> savedAndRead(FIBITMAP* bm, FREE_IMAGE_FORMAT format, const std::string& name,
+                                                 Diagnostics& diags) {
+    const std::string path = test::tempPath(name);
+    EXPECT_TRUE(FreeImage_Save(format, bm, path.c_str(), 0)) << name;
     FreeImage_Unload(bm);
-    return path;
+    return readTextureImage(path, {"t.scene", 3, 0}, diags);
 }
 
 void expectTexel(const TextureImage& image, int x, int y, Vec3 expected) {
@@ -35,7 +41,7 @@ void expectTexel(const TextureImage& image, int x, int y, Vec3 expected) {
 
 TEST(TextureReader, PngRowZeroIsTheBottomRow) {
     Diagnostics diags;
-    const auto image = readTextureImage(writeTinyPng("tiny.png"), {"t.scene", 3, 0}, diags);
+    const auto image = savedAndRead(tinyBitmap(), FIF_PNG, "tiny.png", diags);
     ASSERT_TRUE(image);
     EXPECT_TRUE(diags.items.empty());
     ASSERT_EQ(image->width, 2);
@@ -49,30 +55,24 @@ TEST(TextureReader, PngRowZeroIsTheBottomRow) {
 }
 
 TEST(TextureReader, FloatImagesKeepTheirValues) {
-    const std::string path = test::tempPath("float.pfm");
     FIBITMAP* bm = FreeImage_AllocateT(FIT_RGBF, 2, 1);
     auto* row = reinterpret_cast<FIRGBF*>(FreeImage_GetScanLine(bm, 0));
     row[0] = {0.25f, 2.5f, 0.0f};
     row[1] = {1.0f, 0.5f, 7.0f};
-    ASSERT_TRUE(FreeImage_Save(FIF_PFM, bm, path.c_str(), 0));
-    FreeImage_Unload(bm);
     Diagnostics diags;
-    const auto image = readTextureImage(path, {"t.scene", 3, 0}, diags);
+    const auto image = savedAndRead(bm, FIF_PFM, "float.pfm", diags);
     ASSERT_TRUE(image);
     expectTexel(*image, 0, 0, {0.25f, 2.5f, 0.0f});
     expectTexel(*image, 1, 0, {1.0f, 0.5f, 7.0f});
 }
 
 TEST(TextureReader, GreyscaleBecomesRgb) {
-    const std::string path = test::tempPath("grey.png");
     FIBITMAP* bm = FreeImage_Allocate(1, 1, 8);
     RGBQUAD* palette = FreeImage_GetPalette(bm);
     for (int i = 0; i < 256; ++i) palette[i] = {BYTE(i), BYTE(i), BYTE(i), 0};
     FreeImage_GetScanLine(bm, 0)[0] = 51;
-    ASSERT_TRUE(FreeImage_Save(FIF_PNG, bm, path.c_str(), 0));
-    FreeImage_Unload(bm);
     Diagnostics diags;
-    const auto image = readTextureImage(path, {"t.scene", 3, 0}, diags);
+    const auto image = savedAndRead(bm, FIF_PNG, "grey.png", diags);
     ASSERT_TRUE(image);
     expectTexel(*image, 0, 0, {0.2f, 0.2f, 0.2f});
 }
@@ -86,8 +86,7 @@ TEST(TextureReader, MissingFileIsReportedAtTheSourceLine) {
 }
 
 TEST(TextureReader, UndecodableFileIsReported) {
-    const std::string path = test::tempPath("junk.png");
-    std::ofstream(path) << "this is not an image";
+    const std::string path = test::writeTempFile("junk.png", "this is not an image");
     Diagnostics diags;
     EXPECT_FALSE(readTextureImage(path, {"t.scene", 9, 0}, diags));
     ASSERT_EQ(diags.items.size(), 1u);

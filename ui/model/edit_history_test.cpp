@@ -8,9 +8,9 @@
 #include <cstdio>
 
 #include "model/scene_edit.h"
-#include "scene/scene_reader.h"
 #include "scene/scene_writer.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
@@ -18,9 +18,7 @@ namespace {
 using Kind = ObjectId::Kind;
 
 Scene seedScene() {
-    Diagnostics diags;
-    Scene scene = readSceneFile(test::sourcePath("scenes/scene1_area.scene"), diags);
-    EXPECT_FALSE(diags.hasErrors());
+    Scene scene = test::readSourceScene("scenes/scene1_area.scene");
     EXPECT_GE(scene.spheres.size(), 2u);
     return scene;
 }

@@ -8,18 +8,14 @@
 #include "scene/scene_reader.h"
 #include "scene/scene_writer.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
 
 using Kind = ObjectId::Kind;
 
-Scene seedScene() {
-    Diagnostics diags;
-    Scene scene = readSceneFile(test::sourcePath("scenes/scene1_area.scene"), diags);
-    EXPECT_FALSE(diags.hasErrors());
-    return scene;
-}
+Scene seedScene() { return test::readSourceScene("scenes/scene1_area.scene"); }
 
 TEST(ObjectCommands, TheSelectionFollowsEachEdit) {
     Scene scene = seedScene();

@@ -15,6 +15,7 @@
 #include "scene/scene_reader.h"
 #include "scene/scene_writer.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
@@ -24,9 +25,7 @@ using Kind = ObjectId::Kind;
 
 // scene1_area as if it were the file `dir`/edited.scene.
 Scene sceneIn(const std::string& dir) {
-    Diagnostics diags;
-    Scene scene = readSceneFile(test::sourcePath("scenes/scene1_area.scene"), diags);
-    EXPECT_FALSE(diags.hasErrors());
+    Scene scene = test::readSourceScene("scenes/scene1_area.scene");
     scene.path = dir + "/edited.scene";
     return scene;
 }

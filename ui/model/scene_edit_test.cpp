@@ -10,18 +10,14 @@
 #include "scene/scene_reader.h"
 #include "scene/scene_writer.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
 
 using Kind = ObjectId::Kind;
 
-std::string errorsOf(const Diagnostics& d) {
-    std::string s;
-    for (const Diagnostic& x : d.items)
-        if (x.severity == Severity::Error) s += formatDiagnostic(x) + "\n";
-    return s;
-}
+std::string errorsOf(const Diagnostics& d) { return test::listedDiagnostics(d, true); }
 
 void writeFile(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
 

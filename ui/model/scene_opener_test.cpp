@@ -4,21 +4,13 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "test_paths.h"
 
 namespace trazo {
 namespace {
 
-std::string writeScene(const std::string& name, const std::string& text) {
-    const std::string path = test::tempPath(name);
-    std::ofstream(path) << text;
-    return path;
-}
-
 TEST(SceneOpener, AGoodSceneOpens) {
-    const std::string path = writeScene("good.scene", "Sphere {\n  Center 0 0 0\n  Radius 2\n}\n");
+    const std::string path = test::writeTempFile("good.scene", "Sphere {\n  Center 0 0 0\n  Radius 2\n}\n");
     const OpenedScene opened = openSceneFile(path);
     ASSERT_TRUE(opened.scene);
     for (const std::string& m : opened.messages) EXPECT_EQ(m.find("error:"), std::string::npos) << m;  // warnings
@@ -27,7 +19,7 @@ TEST(SceneOpener, AGoodSceneOpens) {
 }
 
 TEST(SceneOpener, ErrorsComeBackAsFileLineMessages) {
-    const std::string path = writeScene("bad.scene", "Sphere {\n  Center 0 0 0\n  Radius -2\n}\n");
+    const std::string path = test::writeTempFile("bad.scene", "Sphere {\n  Center 0 0 0\n  Radius -2\n}\n");
     const OpenedScene opened = openSceneFile(path);
     EXPECT_FALSE(opened.scene);
     ASSERT_FALSE(opened.messages.empty());
@@ -36,7 +28,7 @@ TEST(SceneOpener, ErrorsComeBackAsFileLineMessages) {
 }
 
 TEST(SceneOpener, RenderBoundsAreCheckedAsAtStart) {
-    const std::string path = writeScene("bounds.scene", "SceneSettings {\n  IndirectQuality 725\n}\n");
+    const std::string path = test::writeTempFile("bounds.scene", "SceneSettings {\n  IndirectQuality 725\n}\n");
     const OpenedScene opened = openSceneFile(path);
     EXPECT_FALSE(opened.scene);
     ASSERT_EQ(opened.messages.size(), 1u);

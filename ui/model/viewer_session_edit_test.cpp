@@ -10,18 +10,11 @@
 
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
-#include "scene/scene_reader.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
-
-Scene readScene(const std::string& relative) {
-    Diagnostics diags;
-    Scene scene = readSceneFile(test::sourcePath(relative), diags);
-    EXPECT_FALSE(diags.hasErrors());
-    return scene;
-}
 
 // Two spheres (one partly in front of the other) and a unit box moved to [2,3]×[-2,-1]×[-0.5,0.5], seen
 // from +Z; a point light so it renders.
@@ -230,7 +223,7 @@ TEST(ViewerSessionUpload, EachKindOfEditResendsExactlyItsArrays) {
 TEST(ViewerSessionScene, ReplaceSceneUploadsItWholeAndTakesItsSize) {
     ViewerSession session(pickScene(), createCpuBackend(2), 0);
     session.renderPasses(2);
-    const Scene next = readScene("scenes/scene1_area.scene");
+    const Scene next = test::readSourceScene("scenes/scene1_area.scene");
     session.replaceScene(next);
     EXPECT_EQ(session.renderWidth(), uint32_t(next.settings.renderWidth));
     EXPECT_EQ(session.accumulation().passes(), 0u);
@@ -251,7 +244,7 @@ TEST(ViewerSessionScene, ReplaceSceneUploadsItWholeAndTakesItsSize) {
 
 // scene1_area's cycle is 100 passes (its 10 × 10 light): estimates come at 200, 400, ... passes.
 TEST(ViewerSessionConvergence, EstimatesAtEvenCyclesEqualEstimateError) {
-    ViewerSession session(readScene("scenes/scene1_area.scene"), createCpuBackend(2), 0, 8, 8);
+    ViewerSession session(test::readSourceScene("scenes/scene1_area.scene"), createCpuBackend(2), 0, 8, 8);
     ASSERT_EQ(session.accumulation().cyclePasses(), 100u);
     EXPECT_TRUE(session.accumulation().convergence().empty());
     session.renderPasses(150);  // an estimate is due: no batch crosses pass 200
@@ -277,7 +270,7 @@ TEST(ViewerSessionConvergence, EstimatesAtEvenCyclesEqualEstimateError) {
 }
 
 TEST(ViewerSessionConvergence, TargetErrorStopsTheBatches) {
-    ViewerSession session(readScene("scenes/scene1_area.scene"), createCpuBackend(2), 0, 8, 8);
+    ViewerSession session(test::readSourceScene("scenes/scene1_area.scene"), createCpuBackend(2), 0, 8, 8);
     session.setTargetError(1e-9);  // out of reach: passes go on past the first estimate
     session.renderPasses(200);
     session.renderPasses(10);

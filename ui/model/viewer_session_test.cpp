@@ -12,8 +12,8 @@
 #include "render/frame_setup.h"
 #include "render/progressive_render.h"
 #include "render/strata_plan.h"
-#include "scene/scene_reader.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
@@ -64,16 +64,9 @@ private:
     bool throw_;
 };
 
-Scene readScene(const std::string& relative) {
-    Diagnostics diags;
-    Scene scene = readSceneFile(test::sourcePath(relative), diags);
-    EXPECT_FALSE(diags.hasErrors());
-    return scene;
-}
-
 TEST(ViewerSession, StartsUploadedSizedAndClear) {
     RecordingBackend::Calls calls;
-    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 40, 30);
+    ViewerSession session(test::readSourceScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 40, 30);
     EXPECT_EQ(calls.upload, 1);
     EXPECT_EQ(calls.resize, 1);
     EXPECT_EQ(calls.width, 40u);
@@ -85,7 +78,7 @@ TEST(ViewerSession, StartsUploadedSizedAndClear) {
 
 TEST(ViewerSession, MaterialEditReuploadsAndRestarts) {
     RecordingBackend::Calls calls;
-    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
+    ViewerSession session(test::readSourceScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
     session.renderPasses(3);
     EXPECT_EQ(session.accumulation().passes(), 3u);
     const int uploads = calls.upload, resets = calls.reset, resizes = calls.resize;
@@ -106,7 +99,7 @@ TEST(ViewerSession, MaterialEditReuploadsAndRestarts) {
 // The backend is told which arrays changed; a replaced scene that cannot be uploaded leaves the old one.
 TEST(ViewerSession, UploadsNameTheChangedArraysAndAFailedReplaceKeepsTheScene) {
     RecordingBackend::Calls calls;
-    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
+    ViewerSession session(test::readSourceScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
     EXPECT_EQ(calls.lastChanged, kAllArrays);  // the first upload: everything
     session.scene().materials[1].diffuseColor = Vec3(0.2f, 0.3f, 0.4f);
     session.markDirty(kDirtyScene);
@@ -114,11 +107,11 @@ TEST(ViewerSession, UploadsNameTheChangedArraysAndAFailedReplaceKeepsTheScene) {
     EXPECT_EQ(describeArrays(calls.lastChanged), "materials");
 
     const size_t spheres = session.scene().spheres.size();
-    Scene other = readScene("scenes/scene3_csg.scene");
+    Scene other = test::readSourceScene("scenes/scene3_csg.scene");
     calls.failUploads = true;
     EXPECT_THROW(session.replaceScene(other), std::runtime_error);
     EXPECT_EQ(session.scene().spheres.size(), spheres);
-    EXPECT_EQ(session.fileScene().path, readScene("scenes/scene1_area.scene").path);
+    EXPECT_EQ(session.fileScene().path, test::readSourceScene("scenes/scene1_area.scene").path);
     EXPECT_EQ(session.renderWidth(), 16u);
     calls.failUploads = false;
     session.renderPasses(1);  // the next batch re-sends the old scene whole (the backend may hold part of either)
@@ -129,7 +122,7 @@ TEST(ViewerSession, UploadsNameTheChangedArraysAndAFailedReplaceKeepsTheScene) {
 
 TEST(ViewerSession, CameraEditResetsWithoutUpload) {
     RecordingBackend::Calls calls;
-    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
+    ViewerSession session(test::readSourceScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
     session.renderPasses(2);
     const int uploads = calls.upload, resets = calls.reset;
     session.scene().camera.pov = Vec3(1, 5, 15);
@@ -143,7 +136,7 @@ TEST(ViewerSession, CameraEditResetsWithoutUpload) {
 
 TEST(ViewerSession, ResizeReallocates) {
     RecordingBackend::Calls calls;
-    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
+    ViewerSession session(test::readSourceScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 16, 16);
     session.renderPasses(2);
     session.setRenderSize(16, 16);  // the same size: nothing to do
     EXPECT_EQ(session.dirty(), kDirtyNone);
@@ -160,7 +153,7 @@ TEST(ViewerSession, ResizeReallocates) {
 
 TEST(ViewerSession, PreviewRendersSmallerAndFullSizeReturns) {
     RecordingBackend::Calls calls;
-    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 30, 17);
+    ViewerSession session(test::readSourceScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 30, 17);
     session.setPreviewDivisor(4);
     session.renderPasses(1);
     EXPECT_EQ(calls.width, 8u);  // rounded up
@@ -176,7 +169,7 @@ TEST(ViewerSession, PreviewRendersSmallerAndFullSizeReturns) {
 
 TEST(ViewerSession, BatchesRunOnTheWorkerAndErrorsReachTheCaller) {
     RecordingBackend::Calls calls;
-    ViewerSession session(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 8, 8);
+    ViewerSession session(test::readSourceScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(calls), 0, 8, 8);
     std::atomic<int> done{0};
     session.setOnBatchDone([&] { ++done; });
     session.startPasses(5);
@@ -188,7 +181,7 @@ TEST(ViewerSession, BatchesRunOnTheWorkerAndErrorsReachTheCaller) {
     EXPECT_GE(session.passesForBudget(1e9), 1u);
 
     RecordingBackend::Calls failing;
-    ViewerSession broken(readScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(failing, true), 0, 8, 8);
+    ViewerSession broken(test::readSourceScene("scenes/scene1_area.scene"), std::make_unique<RecordingBackend>(failing, true), 0, 8, 8);
     broken.startPasses(1);
     EXPECT_THROW(broken.waitIdle(), std::runtime_error);
 }
@@ -210,7 +203,7 @@ std::vector<Vec3> headlessImage(const Scene& scene, uint32_t width, uint32_t hei
 
 // The viewer's passes, in any batching, accumulate exactly what the headless render does.
 TEST(ViewerSession, BatchedPassesEqualTheHeadlessRender) {
-    const Scene scene = readScene("scenes/scene1_area.scene");
+    const Scene scene = test::readSourceScene("scenes/scene1_area.scene");
     ViewerSession session(scene, createCpuBackend(2), 7, 24, 16);
     for (uint32_t batch : {1u, 2u, 5u, 3u}) session.renderPasses(batch);
     ASSERT_EQ(session.accumulation().passes(), 11u);
@@ -223,7 +216,7 @@ TEST(ViewerSession, BatchedPassesEqualTheHeadlessRender) {
 
 // Fixed blocks other than one stratum (--blocks B, no growth) still accumulate exactly what --render does.
 TEST(ViewerSession, FixedBlocksEqualTheHeadlessRender) {
-    const Scene scene = readScene("scenes/scene1_area.scene");
+    const Scene scene = test::readSourceScene("scenes/scene1_area.scene");
     ViewerSession session(scene, createCpuBackend(2), 5, 24, 16);
     const StrataBlocks blocks{1, 10, 1, 1};
     session.setBlocks(blocks, 0.0);
@@ -239,7 +232,7 @@ TEST(ViewerSession, FixedBlocksEqualTheHeadlessRender) {
 // weighted by the one-stratum passes they stand for; the image stays an unbiased estimate: its mean
 // difference from a converged reference (another seed) is within 4 standard errors of 0.
 TEST(ViewerSession, BlocksGrowAtCycleBoundariesAndKeepTheEstimate) {
-    const Scene scene = readScene("scenes/scene1_area.scene");
+    const Scene scene = test::readSourceScene("scenes/scene1_area.scene");
     ViewerSession session(scene, createCpuBackend(2), 3, 24, 16);
     session.setBlocks(StrataBlocks::ones(), 1e9);  // any pass fits
     const StrataBlocks target = headlessBlocks(flatten(scene).arrays);
@@ -268,7 +261,7 @@ TEST(ViewerSession, BlocksGrowAtCycleBoundariesAndKeepTheEstimate) {
 
 // An edit changes the image; undoing it and restarting gives the first image back bit for bit.
 TEST(ViewerSession, EditChangesTheImageAndUndoRestoresIt) {
-    ViewerSession session(readScene("scenes/scene1_area.scene"), createCpuBackend(2), 0, 24, 16);
+    ViewerSession session(test::readSourceScene("scenes/scene1_area.scene"), createCpuBackend(2), 0, 24, 16);
     session.renderPasses(4);
     const std::vector<Vec3> before = session.image();
     const Vec3 white = session.scene().materials[0].diffuseColor;

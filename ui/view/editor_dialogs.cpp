@@ -15,19 +15,20 @@ bool beginQuestion(const char* name, bool asking) {
     return ImGui::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
 }
 
-}  // namespace
-
-QuitAnswer drawQuitDialog(bool& asking, const std::string& savePath) {
-    QuitAnswer answer = QuitAnswer::None;
-    if (!beginQuestion("Unsaved changes", asking)) return answer;
-    ImGui::Text("The scene has unsaved edits.");
-    ImGui::Text("Save them to %s before quitting?", savePath.c_str());
-    if (ImGui::Button("Save")) answer = QuitAnswer::Save;
-    ImGui::SameLine();
-    if (ImGui::Button("Discard")) answer = QuitAnswer::Discard;
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) answer = QuitAnswer::Cancel;
-    if (answer != QuitAnswer::None) {
+// The modal `name` while `asking`: two lines of text and three buttons on one line, Escape also pressing the last.
+// A press answers and closes it (asking = false); `none` until then.
+template <class Answer>
+Answer ask(const char* name, bool& asking, const std::string (&lines)[2], const char* const (&labels)[3],
+           const Answer (&answers)[3], Answer none) {
+    if (!beginQuestion(name, asking)) return none;
+    for (const std::string& line : lines) ImGui::TextUnformatted(line.c_str());
+    Answer answer = none;
+    for (int i = 0; i < 3; ++i) {
+        if (i > 0) ImGui::SameLine();
+        if (ImGui::Button(labels[i]) || (i == 2 && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))))
+            answer = answers[i];
+    }
+    if (answer != none) {
         asking = false;
         ImGui::CloseCurrentPopup();
     }
@@ -35,22 +36,19 @@ QuitAnswer drawQuitDialog(bool& asking, const std::string& savePath) {
     return answer;
 }
 
+}  // namespace
+
+QuitAnswer drawQuitDialog(bool& asking, const std::string& savePath) {
+    return ask("Unsaved changes", asking,
+               {"The scene has unsaved edits.", "Save them to " + savePath + " before quitting?"},
+               {"Save", "Discard", "Cancel"}, {QuitAnswer::Save, QuitAnswer::Discard, QuitAnswer::Cancel},
+               QuitAnswer::None);
+}
+
 RecoveryAnswer drawRecoveryDialog(bool& asking, const std::string& recoveryPath) {
-    RecoveryAnswer answer = RecoveryAnswer::None;
-    if (!beginQuestion("Recovered edits", asking)) return answer;
-    ImGui::Text("An earlier session left unsaved edits of this scene in");
-    ImGui::Text("%s", recoveryPath.c_str());
-    if (ImGui::Button("Restore them")) answer = RecoveryAnswer::Restore;
-    ImGui::SameLine();
-    if (ImGui::Button("Discard them")) answer = RecoveryAnswer::Discard;
-    ImGui::SameLine();
-    if (ImGui::Button("Not now") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) answer = RecoveryAnswer::Keep;
-    if (answer != RecoveryAnswer::None) {
-        asking = false;
-        ImGui::CloseCurrentPopup();
-    }
-    ImGui::EndPopup();
-    return answer;
+    return ask("Recovered edits", asking, {"An earlier session left unsaved edits of this scene in", recoveryPath},
+               {"Restore them", "Discard them", "Not now"},
+               {RecoveryAnswer::Restore, RecoveryAnswer::Discard, RecoveryAnswer::Keep}, RecoveryAnswer::None);
 }
 
 }  // namespace trazo

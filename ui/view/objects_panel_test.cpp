@@ -10,9 +10,9 @@
 #include <functional>
 
 #include "model/edit_history.h"
-#include "scene/scene_reader.h"
 #include "scene/scene_writer.h"
 #include "test_paths.h"
+#include "test_scenes.h"
 
 namespace trazo {
 namespace {
@@ -52,17 +52,13 @@ private:
 };
 
 Scene editScene() {
-    Diagnostics diags;
-    Scene scene = readSceneFile(test::sourcePath("scenes/scene3_csg_area.scene"), diags);
-    EXPECT_FALSE(diags.hasErrors());
+    Scene scene = test::readSourceScene("scenes/scene3_csg_area.scene");
     Selection none;
     addAndSelect(scene, none, Kind::Sphere, Vec3(0, 1, 0));
     addAndSelect(scene, none, Kind::Cylinder, Vec3(0, 1, 0));
     addAndSelect(scene, none, Kind::PointLight, Vec3(0, 3, 0));
-    const std::string obj = test::tempPath("panel_tetra.obj");
-    FILE* f = std::fopen(obj.c_str(), "w");
-    std::fputs("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n", f);
-    std::fclose(f);
+    const std::string obj = test::writeTempFile("panel_tetra.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n");
+    Diagnostics diags;
     EXPECT_TRUE(addObjectFromFile(scene, Kind::Mesh, obj, Vec3(0, 1, 0), diags));
     return scene;
 }

@@ -164,6 +164,134 @@ bool bruteForceNearest(const SceneArrays& arrays, const Ray& ray, SurfaceHit& ou
     return found;
 }
 
+// Whether another triangle of the hit's mesh meets the ray at exactly the hit's t.
+bool tiesWithAnother(const SceneArrays& arrays, const Ray& ray, const SurfaceHit& hit) {
+    const MeshShape& mesh = arrays.meshes[hit.object];
+    const TriangleRay tr = makeTriangleRay(ray);
+    for (uint32_t k = mesh.triangleOffset; k < mesh.triangleOffset + mesh.triangleCount; ++k) {
+        TriangleHit h;
+        const MeshTriangle& t = arrays.triangles[k];
+        if (k != hit.triangle && intersectTriangle(tr, t.p0, t.p1, t.p2, 0.0f, INFINITY, h) && h.t == hit.t) return true;
+    }
+    return false;
+}
+
+// The four-wide trees of some meshes and eight-wide ones made of them with leaves in runs of up to 1, 2 and 4
+// (widenMeshBvhs' groupLeaves), each as a view with its name. The views point into the arrays: not copied.
+struct MeshTrees {
+    static constexpr uint32_t kGroups[] = {1, 2, 4};
+    static constexpr int kCount = 1 + std::size(kGroups);
+    SceneArrays widened[std::size(kGroups)];  // each tree's own nodeOffset8
+    EightWideMeshes meshes8[std::size(kGroups)];
+    SceneView views[kCount];
+    std::string names[kCount];
+
+    MeshTrees() = default;
+    MeshTrees(const MeshTrees&) = delete;
+};
+
+// Blocks in runs of more than one where runs are asked for, and runs of three or four (one sixteen-lane test
+// where AVX-512 runs) where up to four are.
+void expectRunsAsAsked(const EightWideMeshes& meshes8, uint32_t group) {
+    size_t runBlocks = 0, longRuns = 0;
+    for (const WideBvhNode8& node : meshes8.nodes)
+        for (uint32_t ref : node.child)
+            if (ref != kBvhEmptyLane && bvhIsLeaf(ref) && bvhLeafCount(ref) > 1) {
+                runBlocks += bvhLeafCount(ref);
+                longRuns += bvhLeafCount(ref) > 2;
+            }
+    if (group == 1) EXPECT_EQ(runBlocks, 0u);
+    else EXPECT_GT(runBlocks, meshes8.blocks.size() / 10) << "runs of " << group;
+    if (group == 4) {
+        EXPECT_GT(longRuns, 20u);
+    }
+}
+
+void widenTrees(const SceneArrays& arrays, MeshTrees& trees) {
+    static_assert(kMeshLeafGroup == 4, "the renderer's runs are among those tested");
+    trees.views[0] = hostView(arrays);
+    trees.names[0] = " four-wide";
+    for (size_t k = 0; k < std::size(MeshTrees::kGroups); ++k) {
+        const uint32_t group = MeshTrees::kGroups[k];
+        trees.widened[k] = arrays;
+        const bool anyHit8 = group > 1;
+        widenMeshBvhs(trees.widened[k], trees.meshes8[k], group, anyHit8 ? 0 : UINT32_MAX);
+        ASSERT_FALSE(trees.meshes8[k].nodes.empty());
+        for (const MeshShape& mesh : trees.widened[k].meshes) ASSERT_EQ(mesh.anyHit8, anyHit8 ? 1u : 0u);
+        trees.views[k + 1] = hostView(trees.widened[k]);
+        viewEightWide(trees.views[k + 1], trees.meshes8[k]);
+        trees.names[k + 1] = " eight-wide, runs of up to " + std::to_string(group) + " leaves" +
+                             (anyHit8 ? ", shadow rays eight-wide too" : "");
+        expectRunsAsAsked(trees.meshes8[k], group);
+    }
+}
+
+// A packet of rays from one origin with brute force's answers, and the same rays as shadow segments that end a
+// random way before or after the nearest hit.
+struct RayBatch {
+    Vec3 origin;
+    RayPacket packet, shadows;
+    SurfaceHit expected[kPacketRays];
+    bool found[kPacketRays];
+    bool blocked(int i) const { return found[i] && expected[i].t < shadows.tMax[i]; }
+};
+
+// Random directions, or (towardGrid) directions through the grid's vertices and edge midpoints.
+RayBatch rayBatch(const SceneArrays& arrays, CounterUniform& u, Vec3 origin, bool towardGrid, size_t& hits,
+                  size_t& ties) {
+    RayBatch b;
+    b.origin = origin;
+    for (int i = 0; i < kPacketRays; ++i) {
+        const Vec3 d = towardGrid ? towardsGridPoint(u, origin) : u.direction();
+        b.packet.dx[i] = d.x, b.packet.dy[i] = d.y, b.packet.dz[i] = d.z, b.packet.tMax[i] = INFINITY;
+    }
+    b.shadows = b.packet;
+    for (int i = 0; i < kPacketRays; ++i) {
+        const Ray ray{origin, Vec3(b.packet.dx[i], b.packet.dy[i], b.packet.dz[i])};
+        b.found[i] = bruteForceNearest(arrays, ray, b.expected[i]);
+        b.shadows.tMax[i] = b.found[i] ? b.expected[i].t * u(0.5f, 1.5f) : 20.0f;
+        if (!b.found[i]) continue;
+        ++hits;
+        ties += tiesWithAnother(arrays, ray, b.expected[i]);
+    }
+    return b;
+}
+
+// The camera-packet kernel's nearest hits: the same t, triangle and barycentrics, bit for bit.
+void expectNearestAsBruteForce(const CameraPacketKernels& kernels, const SceneView& view, const RayBatch& b,
+                               const std::string& what) {
+    RayPacket rays = b.packet;
+    TracedRay out[kPacketRays];
+    kernels.tracePacket(view, b.origin, rays, ~0ull, out);
+    for (int i = 0; i < kPacketRays; ++i) {
+        const std::string where = what + ", ray " + std::to_string(i);
+        ASSERT_EQ(out[i].found, b.found[i]) << where;
+        if (!b.found[i]) continue;
+        EXPECT_EQ(out[i].hit.t, b.expected[i].t) << where;
+        EXPECT_EQ(out[i].hit.object, b.expected[i].object) << where;
+        ASSERT_EQ(out[i].hit.triangle, b.expected[i].triangle) << where;
+        EXPECT_EQ(out[i].hit.b1, b.expected[i].b1) << where;
+        EXPECT_EQ(out[i].hit.b2, b.expected[i].b2) << where;
+    }
+}
+
+// The shadow packet (where the ISA has one) and the shadow ray queries block as brute force says.
+void expectShadowsAsBruteForce(const CpuKernels& kernels, const SceneView& view, const RayBatch& b,
+                               const std::string& what) {
+    const uint64_t blocked = kernels.occludedPacket ? kernels.occludedPacket(view, b.origin, b.shadows, ~0ull) : 0;
+    RayQuery queries[kPacketRays];
+    RayAnswer answers[kPacketRays];
+    for (int i = 0; i < kPacketRays; ++i)
+        queries[i] = RayQuery{Ray{b.origin, Vec3(b.packet.dx[i], b.packet.dy[i], b.packet.dz[i])}, b.shadows.tMax[i]};
+    kernels.answerRayQueries(view, queries, kPacketRays, RayQueryKind::Shadow, answers);
+    for (int i = 0; i < kPacketRays; ++i) {
+        if (kernels.occludedPacket) {
+            EXPECT_EQ(((blocked >> i) & 1) != 0, b.blocked(i)) << what << ", shadow packet lane " << i;
+        }
+        EXPECT_EQ(answers[i].t != 0.0f, b.blocked(i)) << what << ", shadow query " << i;
+    }
+}
+
 // Meshes over eight-wide nodes (the AVX2 and AVX-512 kernels, SceneView::meshNodes8) answer every nearest-hit
 // query as the four-wide ones and as brute force do, ties included: the same t, triangle and barycentrics,
 // bit for bit, with leaves tested one at a time or in runs (widenMeshBvhs' groupLeaves); shadow queries answer
@@ -171,106 +299,25 @@ bool bruteForceNearest(const SceneArrays& arrays, const Ray& ray, SurfaceHit& ou
 // random directions, and rays through the grid's vertices and edge midpoints.
 TEST(CpuIsa, EightWideMeshesAnswerAsFourWideAndBruteForce) {
     const SceneArrays arrays = twoMeshes();
-    const uint32_t groups[] = {1, 2, 4};
-    static_assert(kMeshLeafGroup == 4, "the renderer's runs are among those tested");
-    constexpr int kTrees = 1 + std::size(groups);
-    SceneArrays widened[std::size(groups)];  // each tree's own nodeOffset8
-    EightWideMeshes meshes8[std::size(groups)];
-    SceneView views[kTrees] = {hostView(arrays)};
-    std::string names[kTrees] = {" four-wide"};
-    for (size_t k = 0; k < std::size(groups); ++k) {
-        widened[k] = arrays;
-        const bool anyHit8 = groups[k] > 1;
-        widenMeshBvhs(widened[k], meshes8[k], groups[k], anyHit8 ? 0 : UINT32_MAX);
-        ASSERT_FALSE(meshes8[k].nodes.empty());
-        for (const MeshShape& mesh : widened[k].meshes) ASSERT_EQ(mesh.anyHit8, anyHit8 ? 1u : 0u);
-        views[k + 1] = hostView(widened[k]);
-        viewEightWide(views[k + 1], meshes8[k]);
-        names[k + 1] = " eight-wide, runs of up to " + std::to_string(groups[k]) + " leaves" +
-                       (anyHit8 ? ", shadow rays eight-wide too" : "");
-        // Blocks in runs of more than one, and runs of three or four (one sixteen-lane test where AVX-512 runs).
-        size_t runBlocks = 0, longRuns = 0;
-        for (const WideBvhNode8& node : meshes8[k].nodes)
-            for (uint32_t ref : node.child)
-                if (ref != kBvhEmptyLane && bvhIsLeaf(ref) && bvhLeafCount(ref) > 1) {
-                    runBlocks += bvhLeafCount(ref);
-                    longRuns += bvhLeafCount(ref) > 2;
-                }
-        if (groups[k] == 1) EXPECT_EQ(runBlocks, 0u);
-        else EXPECT_GT(runBlocks, meshes8[k].blocks.size() / 10) << "runs of " << groups[k];
-        if (groups[k] == 4) {
-            EXPECT_GT(longRuns, 20u);
-        }
-    }
+    MeshTrees trees;
+    widenTrees(arrays, trees);
+    if (HasFatalFailure()) return;
 
     CounterUniform u(3);
     const Vec3 origins[] = {{0.3f, 0.2f, 4.0f}, {4.5f, 0.1f, 2.0f}, {-3.0f, 0.5f, -0.5f}, {5.0f, -1.0f, -3.0f}};
     size_t hits = 0, ties = 0, rays = 0, shadowRays = 0, blockedRays = 0;
     for (const Vec3& origin : origins) {
         for (int batch = 0; batch < 40; ++batch) {
-            RayPacket packet;
-            for (int i = 0; i < kPacketRays; ++i) {
-                const Vec3 d = batch % 2 == 0 ? u.direction() : towardsGridPoint(u, origin);
-                packet.dx[i] = d.x, packet.dy[i] = d.y, packet.dz[i] = d.z, packet.tMax[i] = INFINITY;
-            }
-            SurfaceHit expected[kPacketRays];
-            bool found[kPacketRays];
-            RayPacket shadows = packet;  // segments ending a random way before or after the nearest hit
-            for (int i = 0; i < kPacketRays; ++i) {
-                const Ray ray{origin, Vec3(packet.dx[i], packet.dy[i], packet.dz[i])};
-                found[i] = bruteForceNearest(arrays, ray, expected[i]);
-                shadows.tMax[i] = found[i] ? expected[i].t * u(0.5f, 1.5f) : 20.0f;
-                if (!found[i]) continue;
-                ++hits;
-                // A tie: another triangle of the same mesh at exactly this t.
-                const MeshShape& mesh = arrays.meshes[expected[i].object];
-                const TriangleRay tr = makeTriangleRay(ray);
-                for (uint32_t k = mesh.triangleOffset; k < mesh.triangleOffset + mesh.triangleCount; ++k) {
-                    TriangleHit h;
-                    const MeshTriangle& t = arrays.triangles[k];
-                    if (k != expected[i].triangle && intersectTriangle(tr, t.p0, t.p1, t.p2, 0.0f, INFINITY, h) &&
-                        h.t == expected[i].t) {
-                        ++ties;
-                        break;
-                    }
-                }
-            }
+            const RayBatch b = rayBatch(arrays, u, origin, batch % 2 != 0, hits, ties);
             for (CpuIsa isa : supportedIsas()) {
-                const CameraPacketKernels& kernels = cpuKernelsFor(isa)->cameraPackets();
-                if (!kernels.available) continue;
-                for (int tree = 0; tree < kTrees; ++tree) {
-                    const SceneView* view = &views[tree];
-                    RayPacket rays = packet;
-                    TracedRay out[kPacketRays];
-                    kernels.tracePacket(*view, origin, rays, ~0ull, out);
-                    for (int i = 0; i < kPacketRays; ++i) {
-                        const std::string where = std::string(cpuIsaName(isa)) + names[tree] + ", ray " +
-                                                  std::to_string(i) + " of batch " + std::to_string(batch);
-                        ASSERT_EQ(out[i].found, found[i]) << where;
-                        if (!found[i]) continue;
-                        EXPECT_EQ(out[i].hit.t, expected[i].t) << where;
-                        EXPECT_EQ(out[i].hit.object, expected[i].object) << where;
-                        ASSERT_EQ(out[i].hit.triangle, expected[i].triangle) << where;
-                        EXPECT_EQ(out[i].hit.b1, expected[i].b1) << where;
-                        EXPECT_EQ(out[i].hit.b2, expected[i].b2) << where;
-                    }
-                    const std::string kernel = std::string(cpuIsaName(isa)) + names[tree] + ", batch " +
-                                               std::to_string(batch);
-                    const auto occludedPacket = cpuKernelsFor(isa)->occludedPacket;
-                    const uint64_t blocked = occludedPacket ? occludedPacket(*view, origin, shadows, ~0ull) : 0;
-                    RayQuery queries[kPacketRays];
-                    RayAnswer answers[kPacketRays];
-                    for (int i = 0; i < kPacketRays; ++i)
-                        queries[i] = RayQuery{Ray{origin, Vec3(packet.dx[i], packet.dy[i], packet.dz[i])}, shadows.tMax[i]};
-                    cpuKernelsFor(isa)->answerRayQueries(*view, queries, kPacketRays, RayQueryKind::Shadow, answers);
-                    for (int i = 0; i < kPacketRays; ++i) {
-                        const bool expectBlocked = found[i] && expected[i].t < shadows.tMax[i];
-                        shadowRays += 1, blockedRays += expectBlocked;
-                        if (occludedPacket) {
-                            EXPECT_EQ(((blocked >> i) & 1) != 0, expectBlocked) << kernel << ", shadow packet lane " << i;
-                        }
-                        EXPECT_EQ(answers[i].t != 0.0f, expectBlocked) << kernel << ", shadow query " << i;
-                    }
+                const CameraPacketKernels& cameraPackets = cpuKernelsFor(isa)->cameraPackets();
+                if (!cameraPackets.available) continue;
+                for (int tree = 0; tree < MeshTrees::kCount; ++tree) {
+                    const std::string what = cpuIsaName(isa) + trees.names[tree] + ", batch " + std::to_string(batch);
+                    expectNearestAsBruteForce(cameraPackets, trees.views[tree], b, what);
+                    if (HasFatalFailure()) return;
+                    expectShadowsAsBruteForce(*cpuKernelsFor(isa), trees.views[tree], b, what);
+                    for (int i = 0; i < kPacketRays; ++i) shadowRays += 1, blockedRays += b.blocked(i);
                 }
             }
             rays += kPacketRays;

@@ -1,8 +1,9 @@
-// The body of tile_render_sse2/avx2/avx512.cpp: the CPU backend's tile renderer and ray-query loop, compiled
-// in each of those translation units with its own -m flags (renderer/CMakeLists.txt). Include it nowhere
-// else. Each includer is compiled with -fno-weak, so every inline function and template it emits (renderSample
-// and all it calls) is local to it: a baseline caller never links to an AVX copy. And with
-// -ffp-contract=off, so that no a·b + c becomes a fused multiply-add: every path computes the same bits.
+// The body of tile_render_sse2/avx2/avx512.cpp (generated from tile_render_isa.cpp.in): the CPU backend's tile
+// renderer and ray-query loop, compiled in each of those translation units with its own -m flags
+// (renderer/CMakeLists.txt). Include it nowhere else. Each includer is compiled with -fno-weak, so every inline
+// function and template it emits (renderSample and all it calls) is local to it: a baseline caller never links to
+// an AVX copy. And with -ffp-contract=off, so that no a·b + c becomes a fused multiply-add: every path computes
+// the same bits.
 #pragma once
 
 #include "backends/cpu/cpu_kernels.h"
