@@ -1,8 +1,8 @@
 // Tests (host) of intersectRectangle against closed forms and its two triangles in double (kind_test_support.h).
 #include <gtest/gtest.h>
 
-#include "objects/kind_test_support.h"
 #include "lights/rectangle.h"
+#include "objects/kind_test_support.h"
 
 namespace trazo {
 namespace {
