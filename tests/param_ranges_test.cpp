@@ -57,23 +57,26 @@ int expectWidgetLimitsAreTheReaders(std::span<const ParamSpec<Target>> table, Ta
 }
 
 TEST(ParamRanges, EveryWidgetSpansExactlyWhatTheReaderAccepts) {
-    const int widgets =
-        expectWidgetLimitsAreTheReaders<SceneSettings>(sceneSettingsTable(), [](Scene& s) -> auto& { return s.settings; }) +
-        expectWidgetLimitsAreTheReaders<Camera>(cameraTable(), [](Scene& s) -> auto& { return s.camera; }) +
-        expectWidgetLimitsAreTheReaders<PointLight>(lightTable<PointLight>(), [](Scene& s) -> auto& { return s.pointLights.emplace_back(); }) +
-        expectWidgetLimitsAreTheReaders<AreaLight>(lightTable<AreaLight>(), [](Scene& s) -> auto& { return s.areaLights[0]; });
-    // Materials: the panel edits the reader's draft.
-    static MaterialDraft draft;
-    const int materialWidgets = expectWidgetLimitsAreTheReaders<MaterialDraft>(
-        materialTable(), [](Scene&) -> auto& { return draft; });
     // Every numeric row has a widget (a name or a path has its own editor).
     auto numericRows = [](auto table) {
         int rows = 0;
         for (const auto& row : table) rows += row.info.kind == ValueKind::Real || row.info.kind == ValueKind::Int;
         return rows;
     };
-    EXPECT_EQ(widgets, numericRows(sceneSettingsTable()) + numericRows(cameraTable()) + numericRows(lightTable<PointLight>()) +
-                           numericRows(lightTable<AreaLight>()));
+    int widgets =
+        expectWidgetLimitsAreTheReaders<SceneSettings>(sceneSettingsTable(), [](Scene& s) -> auto& { return s.settings; }) +
+        expectWidgetLimitsAreTheReaders<Camera>(cameraTable(), [](Scene& s) -> auto& { return s.camera; });
+    int lightRows = 0;
+#define TRAZO_X(Data, array, Kind, ...)                                                                              \
+    widgets += expectWidgetLimitsAreTheReaders<Kind>(lightTable<Kind>(), [](Scene& s) -> auto& { return s.array.emplace_back(); }); \
+    lightRows += numericRows(lightTable<Kind>());
+    TRAZO_LIGHT_KINDS(TRAZO_X)
+#undef TRAZO_X
+    // Materials: the panel edits the reader's draft.
+    static MaterialDraft draft;
+    const int materialWidgets = expectWidgetLimitsAreTheReaders<MaterialDraft>(
+        materialTable(), [](Scene&) -> auto& { return draft; });
+    EXPECT_EQ(widgets, numericRows(sceneSettingsTable()) + numericRows(cameraTable()) + lightRows);
     EXPECT_EQ(materialWidgets, numericRows(materialTable()));
     EXPECT_GE(materialWidgets, 8);  // the colours and the scalars of SPEC §3
 }

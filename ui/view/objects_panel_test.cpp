@@ -56,7 +56,9 @@ Scene editScene() {
     Selection none;
     addAndSelect(scene, none, Kind::Sphere, Vec3(0, 1, 0));
     addAndSelect(scene, none, Kind::Cylinder, Vec3(0, 1, 0));
-    addAndSelect(scene, none, Kind::PointLight, Vec3(0, 3, 0));
+#define TRAZO_X(Data, array, HostKind, ...) addAndSelect(scene, none, Kind::HostKind, Vec3(0, 3, 0));
+    TRAZO_LIGHT_KINDS(TRAZO_X)  // every light kind, so a new one is drawn too
+#undef TRAZO_X
     const std::string obj = test::writeTempFile("panel_tetra.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n");
     Diagnostics diags;
     EXPECT_TRUE(addObjectFromFile(scene, Kind::Mesh, obj, Vec3(0, 1, 0), diags));
