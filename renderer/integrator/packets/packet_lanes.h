@@ -56,14 +56,6 @@ typedef uint32_t LaneU __attribute__((vector_size(kLanes * 4)));
 constexpr int kGroups = kPacketRays / kLanes;
 constexpr uint64_t kGroupBits = kLanes == 64 ? ~0ull : (1ull << kLanes) - 1;
 
-// sinCosOf's number type in lanes: sinCosOf<LaneTrig> is sinCos lane by lane, bit for bit.
-struct LaneTrig {
-    using F = LaneF;
-    using I = LaneI;
-    static I truncate(F x) { return __builtin_convertvector(x, LaneI); }
-    static F toFloat(I k) { return __builtin_convertvector(k, LaneF); }
-};
-
 // The lanes of the groups up to the last ray of `rays` (bit i: ray i): a multiple of kLanes, 0 for none.
 inline int groupedLanes(uint64_t rays) {
     return rays ? (64 - __builtin_clzll(rays) + kLanes - 1) / kLanes * kLanes : 0;
@@ -87,6 +79,12 @@ inline uint64_t bits(LaneI m) {
 #else
     return (uint64_t)(unsigned)_mm_movemask_ps((__m128)m);
 #endif
+}
+// Lane i true (−1) where bit i of `rays` is set: bits' inverse.
+inline LaneI laneMask(uint64_t rays) {
+    LaneI bit;
+    for (int i = 0; i < kLanes; ++i) bit[i] = int32_t(1u << i);
+    return ((LaneI{} + int32_t(rays & kGroupBits)) & bit) != 0;
 }
 inline LaneF sqrt(LaneF x) {
 #if defined(__AVX512F__)
@@ -122,18 +120,78 @@ inline LaneF unitFloats(uint32_t key, LaneU dimension) {
     return __builtin_convertvector((LaneI)(x >> 8), LaneF) * (1.0f / 16777216.0f);
 }
 
-// The lanes of one ray group, and of a Vec3 per lane.
+// The lanes of one ray group, and of a Vec3 per lane. Its functions are core/vec3.h's, lane by lane; a Vec3
+// operand is one vector for all lanes.
 struct V3 {
     LaneF x, y, z;
+    const LaneF& operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
 };
+inline V3 operator+(const V3& a, const V3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline V3 operator+(const V3& a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline V3 operator+(Vec3 a, const V3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline V3 operator-(const V3& a, const V3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline V3 operator-(const V3& a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline V3 operator-(Vec3 a, const V3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline V3 operator*(const V3& a, LaneF s) { return {a.x * s, a.y * s, a.z * s}; }
 inline LaneF dot(const V3& a, const V3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline LaneF dot(Vec3 a, const V3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline LaneF dot(const V3& a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 inline V3 cross(const V3& a, const V3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 inline V3 cross(Vec3 a, const V3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
+inline V3 cross(const V3& a, Vec3 b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline LaneF length(const V3& a) { return sqrt(dot(a, a)); }
+inline V3 normalize(const V3& a) { return a * (1.0f / sqrt(dot(a, a))); }
+inline V3 abs(const V3& a) { return {fabs(a.x), fabs(a.y), fabs(a.z)}; }
+inline LaneF maxOf(LaneF a, LaneF b) { return a > b ? a : b; }
+inline LaneF maxComponent(const V3& a) { return maxOf(a.x, maxOf(a.y, a.z)); }
+inline V3 applyToVector(const Affine3& m, const V3& v) { return {dot(m.row[0], v), dot(m.row[1], v), dot(m.row[2], v)}; }
+inline V3 applyToPoint(const Affine3& m, const V3& p) { return applyToVector(m, p) + m.translation; }
+
+// The number type of lanes (core/number_ops.h): sinCosOf, the shading formulas and the shape tests instantiated
+// for it compute what their scalar code does lane by lane, bit for bit. Operands may mix lanes and one float.
+struct LaneOps {
+    using F = LaneF;
+    using I = LaneI;
+    using B = LaneI;  // −1 where true
+    using V = V3;
+    static LaneF splat(float x) { return packet_detail::splat(x); }
+    static LaneF splat(LaneF x) { return x; }
+    static V3 splat(Vec3 v) { return {splat(v.x), splat(v.y), splat(v.z)}; }
+    static const V3& splat(const V3& v) { return v; }
+    static bool any(LaneI m) { return bits(m) != 0; }
+    static bool any(bool b) { return b; }
+    static bool all(LaneI m) { return bits(m) == kGroupBits; }
+    static bool all(bool b) { return b; }
+    // minOf and maxOf of core/vec3.h.
+    template <class X, class Y>
+    static auto min(X a, Y b) { return a < b ? a : b; }
+    template <class X, class Y>
+    static auto max(X a, Y b) { return a > b ? a : b; }
+    static LaneF sqrt(LaneF x) { return packet_detail::sqrt(x); }
+    static float abs(float x) { return fabsf(x); }
+    static LaneF abs(LaneF x) { return fabs(x); }
+    static LaneF copysign(LaneF magnitude, LaneF sign) { return packet_detail::copysign(magnitude, sign); }
+    static LaneF fma(LaneF a, LaneF b, LaneF c) { return packet_detail::fma(a, b, c); }
+    // libm's expf in the lanes of `needed`, 0 in the others.
+    static LaneF exp(LaneF x, LaneI needed) {
+        LaneF e = {};
+        for (uint64_t left = bits(needed); left; left &= left - 1) {
+            const int i = __builtin_ctzll(left);
+            e[i] = expf(x[i]);
+        }
+        return e;
+    }
+    static V3 select(LaneI m, const V3& a, const V3& b) { return {m ? a.x : b.x, m ? a.y : b.y, m ? a.z : b.z}; }
+    static I truncate(F x) { return __builtin_convertvector(x, LaneI); }
+    static F toFloat(I k) { return __builtin_convertvector(k, LaneF); }
+};
+
 // differenceOfProducts(a, b, c, d) of exact_float.h.
 inline LaneF differenceOfProducts(LaneF a, LaneF b, LaneF c, LaneF d) {
     const LaneF cd = c * d;
@@ -159,14 +217,6 @@ inline LaneF asLanes(float x) { return splat(x); }
 inline LaneF asLanes(LaneF x) { return x; }
 inline float component(Vec3 v, int axis) { return v[axis]; }
 inline LaneF component(const V3& v, int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); }
-inline V3 operator-(const V3& a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-inline LaneF maxOf(LaneF a, LaneF b) { return a > b ? a : b; }
-inline LaneF maxComponent(const V3& a) { return maxOf(a.x, maxOf(a.y, a.z)); }
-inline V3 abs(const V3& a) { return {fabs(a.x), fabs(a.y), fabs(a.z)}; }
-inline V3 applyToPoint(const Affine3& m, const V3& p) {
-    return {dot(m.row[0], p) + m.translation.x, dot(m.row[1], p) + m.translation.y,
-            dot(m.row[2], p) + m.translation.z};
-}
 inline Vec3 applyToPoint(const Affine3& m, Vec3 p) { return m.applyToPoint(p); }
 struct TwoLanes {
     LaneF hi, lo;
