@@ -66,11 +66,11 @@ inline void nearestOfObject(const SceneView& scene, uint32_t index, const Origin
             const SphereShape& sphere = scene.spheres[o.index];
             auto test = [&](int g, uint64_t lanes, const auto& setup) {
                 V3 normal;
-                const uint64_t hits = sphereHits(setup, loadGroup(rays, g), lanes, tHit, &normal);
+                const uint64_t hits = sphereHits(sphere, setup, loadGroup(rays, g), lanes, tHit, &normal);
                 takeNearer(hits, g * kLanes, tHit, nullptr, &normal, index, out, rays.tMax, ties);
             };
             if constexpr (std::is_same_v<Origins, SharedOrigin>) {
-                const SphereSetup k = sphereSetup(sphere, origins.origin);
+                const SphereSetupOf<ScalarOps> k = sphereSetupOf<ScalarOps>(sphere, origins.origin);
                 for (int g = 0; g < kGroups; ++g) {
                     const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
                     if (lanes) test(g, lanes, k);
@@ -78,7 +78,7 @@ inline void nearestOfObject(const SceneView& scene, uint32_t index, const Origin
             } else {
                 for (int g = 0; g < kGroups; ++g) {
                     const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                    if (lanes) test(g, lanes, sphereSetup(sphere, origins.group(g)));
+                    if (lanes) test(g, lanes, sphereSetupOf<LaneOps>(sphere, origins.group(g)));
                 }
             }
             return;

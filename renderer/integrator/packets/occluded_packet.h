@@ -3,7 +3,7 @@
 // together through the top-level BVH, with a mask of the rays still in play per node, and spheres, boxes
 // and cylinders tested against several rays at once (packet_lanes.h). Each ray's answer is occluded()'s bit for
 // bit: a ray meets the same boxes (the slab test of intersectChildren, the same IEEE operations in the same
-// order), so it reaches the same leaves, and the lanes repeat each shape's scalar test operation for operation.
+// order), so it reaches the same leaves, and the shapes' tests in lanes are their scalar tests' own template.
 // Meshes and CSG solids take their scalar objectBlocks, ray by ray. aimShadowRays computes the rays of an
 // area light's cells in the same lanes (integrator/direct_light.h, shadeCellsTogether).
 #pragma once
@@ -27,16 +27,16 @@ inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, c
         case ObjectKind::Sphere: {
             const SphereShape& sphere = scene.spheres[o.index];
             if constexpr (std::is_same_v<Origins, SharedOrigin>) {
-                const SphereSetup k = sphereSetup(sphere, origins.origin);
+                const SphereSetupOf<ScalarOps> k = sphereSetupOf<ScalarOps>(sphere, origins.origin);
                 for (int g = 0; g < kGroups; ++g) {
                     const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                    if (lanes) blocked |= sphereHits(k, loadGroup(rays, g), lanes, tHit) << (g * kLanes);
+                    if (lanes) blocked |= sphereHits(sphere, k, loadGroup(rays, g), lanes, tHit) << (g * kLanes);
                 }
             } else {
                 for (int g = 0; g < kGroups; ++g) {
                     const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
                     if (lanes)
-                        blocked |= sphereHits(sphereSetup(sphere, origins.group(g)), loadGroup(rays, g), lanes, tHit)
+                        blocked |= sphereHits(sphere, sphereSetupOf<LaneOps>(sphere, origins.group(g)), loadGroup(rays, g), lanes, tHit)
                                    << (g * kLanes);
                 }
             }
