@@ -239,11 +239,6 @@ inline uint64_t boxHits(const BoxShape& box, const Origin& origin, const Group& 
     face = enterIn ? enterFace : exitFace;
     return bits(lanes & (tEnter <= tExit) & (enterIn | exitIn));
 }
-template <class Origin>
-inline uint64_t boxHits(const BoxShape& box, const Origin& origin, const Group& ray, uint64_t live, LaneF& tHit) {
-    LaneI face;
-    return boxHits(box, origin, ray, live, tHit, face);
-}
 
 // intersectCylinder(c, Ray{origin, d}, 0, tMax, hit) lane by lane: the lanes that hit, and in tHit their hit.t.
 template <class Origin>
@@ -301,10 +296,16 @@ inline void raysEnteringChildren(const WideBvhNode& node, const Origins& origins
 
 // Where a packet's rays start: one origin for all (SharedOrigin), or one per ray (OwnOrigins over RayOrigins).
 // group(g): the origin of group g's rays, a Vec3 or the lanes' V3; at(i): ray i's.
+// sphereSetups(s).group(g): the sphere's set-up for group g's rays, made once here for all groups.
 struct SharedOrigin {
     Vec3 origin;
     Vec3 group(int) const { return origin; }
     Vec3 at(int) const { return origin; }
+    struct SphereSetups {
+        SphereSetupOf<ScalarOps> k;
+        const SphereSetupOf<ScalarOps>& group(int) const { return k; }
+    };
+    SphereSetups sphereSetups(const SphereShape& s) const { return {sphereSetupOf<ScalarOps>(s, origin)}; }
 };
 
 }  // namespace packet_detail
@@ -325,7 +326,61 @@ struct OwnOrigins {
         return {load(origins.ox + o), load(origins.oy + o), load(origins.oz + o)};
     }
     Vec3 at(int i) const { return Vec3(origins.ox[i], origins.oy[i], origins.oz[i]); }
+    struct SphereSetups {
+        const OwnOrigins& origins;
+        const SphereShape& s;
+        SphereSetupOf<LaneOps> group(int g) const { return sphereSetupOf<LaneOps>(s, origins.group(g)); }
+    };
+    SphereSetups sphereSetups(const SphereShape& s) const { return {*this, s}; }
 };
+
+// Object o against the rays of `live`, group by group, where its kind has a test in lanes (a sphere, box or
+// cylinder; false for the others): each(g, hits, tHit, face, normal) with the rays of group g that hit (bit k:
+// lane k), their t, the box faces hit where o is a box, the normals where it is a sphere and kNormals (else null).
+// Origins: SharedOrigin or OwnOrigins.
+template <bool kNormals, class Origins, class Each>
+inline bool groupHits(const SceneView& scene, const ObjectRef& o, const Origins& origins, const RayPacket& rays,
+                      uint64_t live, Each&& each) {
+    const auto groups = [&](auto&& test) {
+        for (int g = 0; g < kGroups; ++g) {
+            const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
+            if (lanes) test(g, lanes, loadGroup(rays, g));
+        }
+    };
+    LaneF tHit;
+    switch (o.kind) {
+        case ObjectKind::Sphere: {
+            const SphereShape& s = scene.spheres[o.index];
+            const auto setups = origins.sphereSetups(s);
+            V3 normals;
+            V3* const normal = kNormals ? &normals : nullptr;
+            groups([&](int g, uint64_t lanes, const Group& ray) {
+                const uint64_t hits = sphereHits(s, setups.group(g), ray, lanes, tHit, normal);
+                each(g, hits, tHit, nullptr, normal);
+            });
+            return true;
+        }
+        case ObjectKind::Box: {
+            const BoxShape& box = scene.boxes[o.index];
+            LaneI face;
+            groups([&](int g, uint64_t lanes, const Group& ray) {
+                const uint64_t hits = boxHits(box, origins.group(g), ray, lanes, tHit, face);
+                each(g, hits, tHit, &face, nullptr);
+            });
+            return true;
+        }
+        case ObjectKind::Cylinder: {
+            const CylinderShape& cyl = scene.cylinders[o.index];
+            groups([&](int g, uint64_t lanes, const Group& ray) {
+                const uint64_t hits = cylinderHits(cyl, origins.group(g), ray, lanes, tHit);
+                each(g, hits, tHit, nullptr, nullptr);
+            });
+            return true;
+        }
+        default:
+            return false;
+    }
+}
 
 // A node of a packet traversal and the rays still to visit it.
 struct PacketEntry {
