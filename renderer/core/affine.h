@@ -18,6 +18,10 @@ struct Affine3 {
     }
 };
 
+// The members as functions, for code written over the number type (core/number_ops.h), whose lanes overload them.
+TRAZO_HD Vec3 applyToVector(const Affine3& m, Vec3 v) { return m.applyToVector(v); }
+TRAZO_HD Vec3 applyToPoint(const Affine3& m, Vec3 p) { return m.applyToPoint(p); }
+
 // this-then-other, i.e. other ∘ first: the result maps p to other(first(p)).
 TRAZO_HD Affine3 then(const Affine3& first, const Affine3& other) {
     Affine3 r;

@@ -1,22 +1,13 @@
-// sin and cos of one angle at once (host and device), written once as a template over the number type so that
-// the host's SIMD lanes (integrator/packets/packet_lanes.h, LaneTrig) compute the same bits as the scalar code: libm's
+// sin and cos of one angle at once (host and device), written once as a template over the number type
+// (core/number_ops.h) so that the host's SIMD lanes (LaneOps) compute the same bits as the scalar code: libm's
 // sinf/cosf cannot be reproduced in lanes (glibc picks its variant at run time), and a call per direction is
 // 8–9 % of a render with indirect light.
 #pragma once
 
-#include <cstdint>
-
 #include "core/hd.h"
+#include "core/number_ops.h"
 
 namespace trazo {
-
-// The number type and its conversions, for one float.
-struct ScalarTrig {
-    using F = float;
-    using I = int32_t;
-    TRAZO_HD static I truncate(F x) { return (I)x; }
-    TRAZO_HD static F toFloat(I k) { return (F)k; }
-};
 
 // sin x and cos x for 0 ≤ x < 2¹²·π/2, where callers keep their angles (outside it the results are unspecified,
 // and the scalar conversion of a NaN to k would be undefined). The nearest multiple k of π/2 comes off in three
@@ -43,6 +34,6 @@ TRAZO_HD void sinCosOf(typename T::F x, typename T::F& s, typename T::F& c) {
     c = ((k + 1) & 2) != 0 ? -cosAbs : cosAbs;
 }
 
-TRAZO_HD void sinCos(float x, float& s, float& c) { sinCosOf<ScalarTrig>(x, s, c); }
+TRAZO_HD void sinCos(float x, float& s, float& c) { sinCosOf<ScalarOps>(x, s, c); }
 
 }  // namespace trazo

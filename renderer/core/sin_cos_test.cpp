@@ -64,7 +64,7 @@ TEST(SinCos, LanesAreTheScalarCodeBitForBit) {
         alignas(64) float x[kLanes], s[kLanes], c[kLanes];
         for (int k = 0; k < kLanes; ++k) x[k] = bitsToUnitFloat(hashU32(i + k)) * (i < 50000 ? 6.2831853f : 6400.0f);
         LaneF ls, lc;
-        sinCosOf<LaneTrig>(load(x), ls, lc);
+        sinCosOf<LaneOps>(load(x), ls, lc);
         std::memcpy(s, &ls, sizeof ls);
         std::memcpy(c, &lc, sizeof lc);
         for (int k = 0; k < kLanes; ++k) {

@@ -8,6 +8,7 @@
 #include "core/aabb.h"
 #include "core/affine.h"
 #include "core/hd.h"
+#include "core/number_ops.h"
 #include "core/ray.h"
 #include "core/vec3.h"
 #include "geometry/shape_hit.h"
@@ -31,56 +32,63 @@ TRAZO_HD Vec3 boxFaceNormal(const BoxShape& box, int axis, float sign) {
     return normalize(row * (1.0f / maxComponent(abs(row))));
 }
 
-// Nearest hit with tMin < t < tMax; fills hit.t and the unit outward normal. The box is closed: a
-// ray lying in a face's plane counts as inside that slab. From inside, the hit is the exit point.
-TRAZO_HD bool intersectBox(const BoxShape& box, const Ray& ray, float tMin, float tMax, ShapeHit& hit) {
+// The slab test in the box's object space, written over the number type T (core/number_ops.h) for a ray and for
+// SIMD lanes (integrator/packets/packet_lanes.h, whose rays may share an origin, a Vec3): where the line enters
+// (tEnter) and leaves (tExit) the box and through which face, 2·axis + 1 for the + face of the axis; `live` loses
+// the rays parallel to a slab outside it. Whether any is left. The box is closed: a line lying in a face's plane
+// counts as inside that slab. The line meets the box where tEnter ≤ tExit.
+template <class T, class O>
+TRAZO_HD bool boxSlabsOf(const BoxShape& box, const O& originWorld, const typename T::V& directionWorld,
+                         typename T::B& live, typename T::F& tEnter, typename T::F& tExit, typename T::I& enterFace,
+                         typename T::I& exitFace) {
     // The object-space ray is not normalised, so its t is the world t (an affine map keeps ratios).
-    const Vec3 o = box.objectFromWorld.applyToPoint(ray.origin);
-    const Vec3 d = box.objectFromWorld.applyToVector(ray.direction);
-
-    float tEnter = -INFINITY, tExit = INFINITY;
-    int enterAxis = -1, exitAxis = -1;
-    float enterSign = 0.0f, exitSign = 0.0f;  // which face of the axis: −1 or +1
+    const O o = applyToPoint(box.objectFromWorld, originWorld);
+    const typename T::V d = applyToVector(box.objectFromWorld, directionWorld);
+    tEnter = T::splat(-INFINITY);
+    tExit = T::splat(INFINITY);
+    enterFace = exitFace = typename T::I{};
     for (int axis = 0; axis < 3; ++axis) {
-        const float oi = o[axis], di = d[axis];
-        if (di == 0.0f) {  // true for −0 too: parallel to this slab, inside it or never
-            if (oi < -0.5f || oi > 0.5f) return false;
-            continue;
+        const typename T::F oi = T::splat(o[axis]), di = d[axis];
+        const typename T::B parallel = di == 0.0f;  // true for −0 too: parallel to this slab, inside it or never
+        if (T::any(parallel)) {
+            live = live & !(parallel & ((oi < -0.5f) | (oi > 0.5f)));
+            if (!T::any(live)) return false;
+            if (T::all(parallel)) continue;
         }
         // Divisions rather than a reciprocal: 0/tiny stays 0 where 0·(1/tiny) = 0·inf would be NaN.
-        const float tLow = (-0.5f - oi) / di;
-        const float tHigh = (0.5f - oi) / di;
-        const bool forward = di > 0.0f;  // enters through the −face, leaves through the +face
-        const float tNear = forward ? tLow : tHigh;
-        const float tFar = forward ? tHigh : tLow;
-        if (tNear > tEnter) {
-            tEnter = tNear;
-            enterAxis = axis;
-            enterSign = forward ? -1.0f : 1.0f;
-        }
-        if (tFar < tExit) {
-            tExit = tFar;
-            exitAxis = axis;
-            exitSign = forward ? 1.0f : -1.0f;
-        }
+        const typename T::F tLow = (-0.5f - oi) / di;
+        const typename T::F tHigh = (0.5f - oi) / di;
+        const typename T::B forward = di > 0.0f;  // enters through the −face, leaves through the +face
+        const typename T::F tNear = forward ? tLow : tHigh;
+        const typename T::F tFar = forward ? tHigh : tLow;
+        const typename T::B enters = (!parallel) & (tNear > tEnter), exits = (!parallel) & (tFar < tExit);
+        tEnter = enters ? tNear : tEnter;
+        tExit = exits ? tFar : tExit;
+        enterFace = enters ? 2 * axis + (forward ? 0 : 1) : enterFace;
+        exitFace = exits ? 2 * axis + (forward ? 1 : 0) : exitFace;
     }
-    if (!(tEnter <= tExit)) return false;
+    return true;
+}
 
-    int axis;
-    float sign;
+// Nearest hit with tMin < t < tMax; fills hit.t and the unit outward normal. From inside, the hit is the exit point.
+TRAZO_HD bool intersectBox(const BoxShape& box, const Ray& ray, float tMin, float tMax, ShapeHit& hit) {
+    bool live = true;
+    float tEnter, tExit;
+    int enterFace, exitFace;
+    if (!boxSlabsOf<ScalarOps>(box, ray.origin, ray.direction, live, tEnter, tExit, enterFace, exitFace)) return false;
+    if (!(tEnter <= tExit)) return false;
+    int face;
     if (tEnter > tMin && tEnter < tMax) {
         hit.t = tEnter;
-        axis = enterAxis;
-        sign = enterSign;
+        face = enterFace;
     } else if (tExit > tMin && tExit < tMax) {
         hit.t = tExit;
-        axis = exitAxis;
-        sign = exitSign;
+        face = exitFace;
     } else {
         return false;
     }
-    hit.normal = boxFaceNormal(box, axis, sign);
-    hit.triangle = uint32_t(2 * axis + (sign > 0.0f ? 1 : 0));  // the face, for objectHitPoint
+    hit.normal = boxFaceNormal(box, face >> 1, face & 1 ? 1.0f : -1.0f);
+    hit.triangle = uint32_t(face);  // for objectHitPoint
     return true;
 }
 

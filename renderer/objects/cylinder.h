@@ -8,6 +8,7 @@
 #include "accel/bvh_traverse.h"
 #include "core/aabb.h"
 #include "core/hd.h"
+#include "core/number_ops.h"
 #include "core/ray.h"
 #include "core/vec3.h"
 #include "geometry/exact_float.h"
@@ -25,77 +26,82 @@ struct CylinderShape {
     float radius;
 };
 
-// Nearest hit with tMin < t < tMax among the side and both caps; fills hit.t and the unit outward
-// normal. Closed: a ray through the rim hits. From inside, the hit is the exit point.
-TRAZO_HD bool intersectCylinder(const CylinderShape& cyl, const Ray& ray, float tMin, float tMax, ShapeHit& hit) {
+// The nearest t in (tMin, tBest) among the side and both caps, written over the number type T
+// (core/number_ops.h) for a ray and for SIMD lanes (integrator/packets/packet_lanes.h, whose rays may share an
+// origin, a Vec3): returns the rays of `live` that hit, their t in tBest and, where asked, the outward normal's
+// direction (not unit) in *normal. Closed: a ray through the rim hits.
+template <class T, class O>
+TRAZO_HD typename T::B cylinderHitsOf(const CylinderShape& cyl, const O& origin, const typename T::V& d,
+                                      float tMin, typename T::B live, typename T::F& tBest,
+                                      typename T::V* normal) {
+    using F = typename T::F;
+    using B = typename T::B;
     const Vec3 axis = cyl.axis;
     const float r = cyl.radius;
-    const Vec3 f = ray.origin - cyl.base;
-    const Vec3 d = ray.direction;
+    const O f = origin - cyl.base;
     // axis × v is v's component orthogonal to the axis, turned by 90° about it (|axis| = 1): the side
     // is |F + t·D| = r, a quadratic in the plane orthogonal to the axis. Compensated cross products
     // keep |D| right for a ray nearly along the axis, and exactly 0 for one along it.
-    const Vec3 fPerp = crossAccurate(axis, f);
-    const Vec3 dPerp = crossAccurate(axis, d);
-    const float fAlong = dot(axis, f);  // height above the base cap
-    const float dAlong = dot(axis, d);
-
-    float tBest = tMax;
-    bool found = false;
-    Vec3 normal;
+    const O fPerp = crossAccurate(axis, f);
+    const typename T::V dPerp = crossAccurate(axis, d);
+    const auto fAlong = dot(axis, f);  // height above the base cap
+    const F dAlong = dot(axis, d);
+    B found = B{};
 
     // Side. a = 0 exactly for a ray parallel to the axis: it cannot cross the side, only the caps.
-    const float a = dot(dPerp, dPerp);
-    if (a > 0.0f) {
+    const F a = dot(dPerp, dPerp);
+    const B side = live & (a > 0.0f);
+    if (T::any(side)) {
         // RTG ch. 7's stable quadratic, in the cross-section. Unlike intersectSphere, c is not
         // compensated: a cylinder huge beside the camera is not worth the arithmetic.
-        const float b = dot(fPerp, dPerp);
-        const Vec3 l = fPerp - dPerp * (b / a);
-        const float lLength = length(l);
-        const float discriminant = a * ((r - lLength) * (r + lLength));
-        if (discriminant >= 0.0f) {
-            const float q = -b - copysignf(sqrtf(discriminant), b);
-            const float c = dot(fPerp, fPerp) - r * r;
-            float t0 = q / a;
-            float t1 = q != 0.0f ? c / q : t0;
-            if (t0 > t1) {
-                const float swap = t0;
-                t0 = t1;
-                t1 = swap;
-            }
-            // A root counts only between the caps; the nearer one wins if both do.
+        const F b = dot(fPerp, dPerp);
+        const typename T::V l = fPerp - dPerp * (b / a);
+        const F lLength = length(l);
+        const F discriminant = a * ((r - lLength) * (r + lLength));
+        const B roots = side & (discriminant >= 0.0f);
+        if (T::any(roots)) {
+            const F q = -b - T::copysign(T::sqrt(discriminant), b);
+            const auto c = dot(fPerp, fPerp) - r * r;
+            const F t0 = q / a;
+            const F t1 = q != 0.0f ? c / q : t0;
+            const B swap = t0 > t1;
+            // A root counts only between the caps; the nearer one wins if both do (then the farther is not
+            // below tBest).
             for (int i = 0; i < 2; ++i) {
-                const float t = i == 0 ? t0 : t1;
-                if (!(t > tMin && t < tBest)) continue;
-                const float height = fAlong + t * dAlong;
-                if (height >= 0.0f && height <= cyl.height) {
-                    tBest = t;
-                    found = true;
-                    // (axis × p) × axis is p's radial component: the outward normal's direction.
-                    normal = cross(fPerp + dPerp * t, axis);
-                    break;
-                }
+                const F t = i == 0 ? (swap ? t1 : t0) : (swap ? t0 : t1);
+                const F height = fAlong + t * dAlong;
+                const B hit = roots & (t > tMin) & (t < tBest) & (height >= 0.0f) & (height <= cyl.height);
+                tBest = hit ? t : tBest;
+                found = found | hit;
+                // (axis × p) × axis is p's radial component: the outward normal's direction.
+                if (normal && T::any(hit)) *normal = T::select(hit, cross(fPerp + dPerp * t, axis), *normal);
             }
         }
     }
 
     // Caps: the planes height = 0 (normal −axis) and height = h (normal +axis), within the radius.
     // dAlong = 0 for a ray parallel to the caps: it meets them only through the side.
-    if (dAlong != 0.0f) {
+    const B caps = live & (dAlong != 0.0f);
+    if (T::any(caps)) {
         for (int i = 0; i < 2; ++i) {
             const float capHeight = i == 0 ? 0.0f : cyl.height;
-            const float t = (capHeight - fAlong) / dAlong;
-            if (!(t > tMin && t < tBest)) continue;
-            const Vec3 radial = fPerp + dPerp * t;
-            if (dot(radial, radial) <= r * r) {
-                tBest = t;
-                found = true;
-                normal = i == 0 ? -axis : axis;
-            }
+            const F t = (capHeight - fAlong) / dAlong;
+            const typename T::V radial = fPerp + dPerp * t;
+            const B hit = caps & (t > tMin) & (t < tBest) & (dot(radial, radial) <= r * r);
+            tBest = hit ? t : tBest;
+            found = found | hit;
+            if (normal && T::any(hit)) *normal = T::select(hit, T::splat(i == 0 ? -axis : axis), *normal);
         }
     }
+    return found;
+}
 
-    if (!found) return false;
+// Nearest hit with tMin < t < tMax among the side and both caps; fills hit.t and the unit outward
+// normal. From inside, the hit is the exit point.
+TRAZO_HD bool intersectCylinder(const CylinderShape& cyl, const Ray& ray, float tMin, float tMax, ShapeHit& hit) {
+    float tBest = tMax;
+    Vec3 normal;
+    if (!cylinderHitsOf<ScalarOps>(cyl, ray.origin, ray.direction, tMin, true, tBest, &normal)) return false;
     hit.t = tBest;
     hit.normal = normalize(normal);
     return true;

@@ -36,56 +36,89 @@ struct SphereShape {
 //    and b² − a·c (from accurate b, c) errs by ~ε·(b² + a·|c|): each form is used where it is the
 //    better one. l comes from d × (f × d)/a, with f × d compensated, so it is accurate to ε·|l|
 //    rather than ε·|f| (RTG's subtraction) — and so is the normal, from l ∓ d·√Δ/a.
-struct SphereRoots {
-    float tNear, tFar;  // tNear ≤ tFar
-    Vec3 l;             // the closest point of the line to the centre, relative to the centre
-    float halfChord;    // √Δ / a: the hit points are l ∓ d·halfChord
+// The roots below are written over the number type T (core/number_ops.h), once for a ray and for SIMD lanes
+// (integrator/packets/packet_lanes.h), whose rays may share an origin (a Vec3 and floats where V and F are lanes).
+
+// What the roots need of the ray's origin o, once for all rays from it: f = o − centre exactly as f + fLo
+// (twoSum), c = |f + fLo|² − r², and the reject's reach².
+template <class T>
+struct SphereSetupOf {
+    typename T::V f, fLo;
+    typename T::F c, reach2;
 };
+
+// The cheap conservative reject (most rays miss most spheres): the line's squared distance to the centre is
+// |f × d|²/|d|², off in plain float by a few ulps of |o| + |centre|; miss only beyond that margin, reach.
+template <class T>
+TRAZO_HD typename T::F sphereReach2(const SphereShape& s, const typename T::V& origin, const typename T::V& f) {
+    const typename T::F margin =
+        1e-5f * (maxComponent(abs(origin)) + maxComponent(abs(s.center)) + maxComponent(abs(f)));
+    const typename T::F reach = s.radius + margin;
+    return reach * reach;
+}
+template <class O, class D, class F>
+TRAZO_HD auto sphereBeyondReach(const O& f, const D& d, F reach2) {
+    const auto fd = cross(f, d);
+    return dot(fd, fd) > reach2 * dot(d, d);
+}
+
+template <class T>
+TRAZO_HD SphereSetupOf<T> sphereSetupOf(const SphereShape& s, const typename T::V& origin) {
+    using Two = TwoOf<typename T::F>;
+    const Two fx = twoSum(origin.x, T::splat(-s.center.x));
+    const Two fy = twoSum(origin.y, T::splat(-s.center.y));
+    const Two fz = twoSum(origin.z, T::splat(-s.center.z));
+    SphereSetupOf<T> k;
+    k.f = {fx.hi, fy.hi, fz.hi};
+    k.fLo = {fx.lo, fy.lo, fz.lo};
+    // (fHi + fLo)² = fHi² + 2·fHi·fLo + fLo²; fLo² is below an ulp of anything that matters here.
+    k.c = lengthSquaredMinusSquareAccurateOf<T>(k.f, s.radius) + 2.0f * dot(k.f, k.fLo);
+    k.reach2 = sphereReach2<T>(s, origin, k.f);  // twoSum's hi is o − centre in plain float
+    return k;
+}
+
+template <class T>
+struct SphereRootsOf {
+    typename T::F tNear, tFar;  // tNear ≤ tFar
+    typename T::V l;            // the closest point of the line to the centre, relative to the centre
+    typename T::F halfChord;    // √Δ / a: the hit points are l ∓ d·halfChord
+};
+using SphereRoots = SphereRootsOf<ScalarOps>;
+
+// The two roots of the lines from the setup's origin along d, where they meet the sphere: `live` keeps those rays.
+// Whether any does.
+template <class T, class Setup>
+TRAZO_HD bool sphereRootsOf(const Setup& k, float r, const typename T::V& d, typename T::B& live,
+                            SphereRootsOf<T>& out) {
+    const auto& f = k.f;
+    const auto& fLo = k.fLo;
+    const auto c = k.c;
+    const typename T::F a = dot(d, d);
+    // Plain b suffices: near the surface f is almost along the normal, so f·d rounds relative to b.
+    const typename T::F b = dot(f, d) + dot(fLo, d);
+    const typename T::V l = cross(d, crossAccurate(f, d) + cross(fLo, d)) * (1.0f / a);
+    const typename T::F lLength = length(l);
+
+    // The form with the smaller of the two error estimates above (their common factor ε dropped).
+    const typename T::B nearForm = b * b + a * T::abs(c) < a * lLength * (r + lLength);
+    const typename T::F discriminant = nearForm ? T::fma(b, b, -a * c) : a * ((r - lLength) * (r + lLength));
+    live = live & (discriminant >= 0.0f);  // also rejects NaN from a zero direction
+    if (!T::any(live)) return false;
+    const typename T::F root = T::sqrt(discriminant);
+    const typename T::F q = -b - T::copysign(root, b);
+    const typename T::F t0 = q / a;
+    const typename T::F t1 = q != 0.0f ? c / q : t0;  // q = 0 only when the line touches the sphere at t = 0
+    const typename T::B swap = t0 > t1;
+    out = {swap ? t1 : t0, swap ? t0 : t1, l, root / a};
+    return true;
+}
 
 // The two roots of the line through the ray, or false when it misses the sphere.
 TRAZO_HD bool sphereRoots(const SphereShape& s, const Ray& ray, SphereRoots& out) {
-    {
-        // Cheap conservative reject first (most rays miss most spheres): the line's squared distance to
-        // the centre is |f × d|²/|d|², off in plain float by a few ulps of |o| + |centre|; miss only
-        // beyond that margin.
-        const Vec3 f = ray.origin - s.center;
-        const Vec3 fd = cross(f, ray.direction);
-        const float margin =
-            1e-5f * (maxComponent(abs(ray.origin)) + maxComponent(abs(s.center)) + maxComponent(abs(f)));
-        const float reach = s.radius + margin;
-        if (dot(fd, fd) > reach * reach * dot(ray.direction, ray.direction)) return false;
-    }
-    const TwoFloat fx = twoSum(ray.origin.x, -s.center.x);
-    const TwoFloat fy = twoSum(ray.origin.y, -s.center.y);
-    const TwoFloat fz = twoSum(ray.origin.z, -s.center.z);
-    const Vec3 f(fx.hi, fy.hi, fz.hi);
-    const Vec3 fLo(fx.lo, fy.lo, fz.lo);
-    const Vec3 d = ray.direction;
-    const float r = s.radius;
-
-    const float a = dot(d, d);
-    // Plain b suffices: near the surface f is almost along the normal, so f·d rounds relative to b.
-    const float b = dot(f, d) + dot(fLo, d);
-    // (fHi + fLo)² = fHi² + 2·fHi·fLo + fLo²; fLo² is below an ulp of anything that matters here.
-    const float c = lengthSquaredMinusSquareAccurate(f, r) + 2.0f * dot(f, fLo);
-    const Vec3 l = cross(d, crossAccurate(f, d) + cross(fLo, d)) * (1.0f / a);
-    const float lLength = length(l);
-
-    // The form with the smaller of the two error estimates above (their common factor ε dropped).
-    const bool nearForm = b * b + a * fabsf(c) < a * lLength * (r + lLength);
-    const float discriminant = nearForm ? fmaf(b, b, -a * c) : a * ((r - lLength) * (r + lLength));
-    if (!(discriminant >= 0.0f)) return false;  // also rejects NaN from a zero direction
-    const float root = sqrtf(discriminant);
-    const float q = -b - copysignf(root, b);
-    float tNear = q / a;
-    float tFar = q != 0.0f ? c / q : tNear;  // q = 0 only when the line touches the sphere at t = 0
-    if (tNear > tFar) {
-        const float swap = tNear;
-        tNear = tFar;
-        tFar = swap;
-    }
-    out = SphereRoots{tNear, tFar, l, root / a};
-    return true;
+    const Vec3 f = ray.origin - s.center;
+    if (sphereBeyondReach(f, ray.direction, sphereReach2<ScalarOps>(s, ray.origin, f))) return false;
+    bool live = true;
+    return sphereRootsOf<ScalarOps>(sphereSetupOf<ScalarOps>(s, ray.origin), s.radius, ray.direction, live, out);
 }
 
 TRAZO_HD bool intersectSphere(const SphereShape& s, const Ray& ray, float tMin, float tMax, ShapeHit& hit) {

@@ -10,8 +10,6 @@
 // intersectScene's.
 #pragma once
 
-#include <type_traits>
-
 #include "integrator/packets/packet_lanes.h"
 
 namespace trazo {
@@ -59,55 +57,11 @@ inline void takeNearer(uint64_t hits, int offset, LaneF tHit, const LaneI* boxFa
 template <class Origins>
 inline void nearestOfObject(const SceneView& scene, uint32_t index, const Origins& origins, RayPacket& rays,
                             uint64_t live, NearestHits& out, uint64_t& ties) {
-    const ObjectRef& o = scene.objects[index];
-    LaneF tHit;
-    switch (o.kind) {
-        case ObjectKind::Sphere: {
-            const SphereShape& sphere = scene.spheres[o.index];
-            auto test = [&](int g, uint64_t lanes, const auto& setup) {
-                V3 normal;
-                const uint64_t hits = sphereHits(setup, loadGroup(rays, g), lanes, tHit, &normal);
-                takeNearer(hits, g * kLanes, tHit, nullptr, &normal, index, out, rays.tMax, ties);
-            };
-            if constexpr (std::is_same_v<Origins, SharedOrigin>) {
-                const SphereSetup k = sphereSetup(sphere, origins.origin);
-                for (int g = 0; g < kGroups; ++g) {
-                    const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                    if (lanes) test(g, lanes, k);
-                }
-            } else {
-                for (int g = 0; g < kGroups; ++g) {
-                    const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                    if (lanes) test(g, lanes, sphereSetup(sphere, origins.group(g)));
-                }
-            }
-            return;
-        }
-        case ObjectKind::Box: {
-            const BoxShape& box = scene.boxes[o.index];
-            for (int g = 0; g < kGroups; ++g) {
-                const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                if (!lanes) continue;
-                LaneI face;
-                const uint64_t hits = boxHits(box, origins.group(g), loadGroup(rays, g), lanes, tHit, face);
-                takeNearer(hits, g * kLanes, tHit, &face, nullptr, index, out, rays.tMax, ties);
-            }
-            return;
-        }
-        case ObjectKind::Cylinder: {
-            const CylinderShape& cyl = scene.cylinders[o.index];
-            for (int g = 0; g < kGroups; ++g) {
-                const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                if (!lanes) continue;
-                const uint64_t hits = cylinderHits(cyl, origins.group(g), loadGroup(rays, g), lanes, tHit);
-                takeNearer(hits, g * kLanes, tHit, nullptr, nullptr, index, out, rays.tMax, ties);
-            }
-            return;
-        }
-        default:  // meshes and CSG solids: the rays that reach one are traced by the scalar code
-            out.redo |= live;
-            return;
-    }
+    const auto take = [&](int g, uint64_t hits, LaneF tHit, const LaneI* face, const V3* normal) {
+        takeNearer(hits, g * kLanes, tHit, face, normal, index, out, rays.tMax, ties);
+    };
+    // Meshes and CSG solids: the rays that reach one are traced by the scalar code.
+    if (!groupHits<true>(scene, scene.objects[index], origins, rays, live, take)) out.redo |= live;
 }
 
 template <class Origins>

@@ -3,12 +3,10 @@
 // together through the top-level BVH, with a mask of the rays still in play per node, and spheres, boxes
 // and cylinders tested against several rays at once (packet_lanes.h). Each ray's answer is occluded()'s bit for
 // bit: a ray meets the same boxes (the slab test of intersectChildren, the same IEEE operations in the same
-// order), so it reaches the same leaves, and the lanes repeat each shape's scalar test operation for operation.
+// order), so it reaches the same leaves, and the shapes' tests in lanes are their scalar tests' own template.
 // Meshes and CSG solids take their scalar objectBlocks, ray by ray. aimShadowRays computes the rays of an
 // area light's cells in the same lanes (integrator/direct_light.h, shadeCellsTogether).
 #pragma once
-
-#include <type_traits>
 
 #include "integrator/packets/packet_lanes.h"
 #include "lights/rectangle.h"
@@ -22,57 +20,19 @@ template <class Origins>
 inline uint64_t objectBlocksPacket(const SceneView& scene, const ObjectRef& o, const Origins& origins,
                                    const RayPacket& rays, uint64_t live) {
     uint64_t blocked = 0;
-    LaneF tHit;  // unused: any hit in (0, tMax) blocks
-    switch (o.kind) {
-        case ObjectKind::Sphere: {
-            const SphereShape& sphere = scene.spheres[o.index];
-            if constexpr (std::is_same_v<Origins, SharedOrigin>) {
-                const SphereSetup k = sphereSetup(sphere, origins.origin);
-                for (int g = 0; g < kGroups; ++g) {
-                    const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                    if (lanes) blocked |= sphereHits(k, loadGroup(rays, g), lanes, tHit) << (g * kLanes);
-                }
-            } else {
-                for (int g = 0; g < kGroups; ++g) {
-                    const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                    if (lanes)
-                        blocked |= sphereHits(sphereSetup(sphere, origins.group(g)), loadGroup(rays, g), lanes, tHit)
-                                   << (g * kLanes);
-                }
-            }
-            return blocked;
-        }
-        case ObjectKind::Box: {
-            const BoxShape& box = scene.boxes[o.index];
-            for (int g = 0; g < kGroups; ++g) {
-                const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                if (lanes) blocked |= boxHits(box, origins.group(g), loadGroup(rays, g), lanes, tHit) << (g * kLanes);
-            }
-            return blocked;
-        }
-        case ObjectKind::Cylinder: {
-            const CylinderShape& cyl = scene.cylinders[o.index];
-            for (int g = 0; g < kGroups; ++g) {
-                const uint64_t lanes = (live >> (g * kLanes)) & kGroupBits;
-                if (lanes)
-                    blocked |= cylinderHits(cyl, origins.group(g), loadGroup(rays, g), lanes, tHit) << (g * kLanes);
-            }
-            return blocked;
-        }
-        default: {  // meshes and CSG solids: their own scalar test, ray by ray
-            uint32_t entries[kTraversalStackSize];
-            AnyStack stack{entries, kTraversalStackSize, 0};
-            for (uint64_t m = live; m; m &= m - 1) {
-                const int i = __builtin_ctzll(m);
-                const Ray ray{origins.at(i), Vec3(rays.dx[i], rays.dy[i], rays.dz[i])};
-                const bool blocks = visitObject(scene, o, [&](const auto& shape) {
-                    return objectBlocks(scene, shape, ray, rays.tMax[i], stack);
-                });
-                if (blocks) blocked |= 1ull << i;
-            }
-            return blocked;
-        }
+    const auto add = [&](int g, uint64_t hits, LaneF, const LaneI*, const V3*) { blocked |= hits << (g * kLanes); };
+    if (groupHits<false>(scene, o, origins, rays, live, add)) return blocked;  // any hit in (0, tMax) blocks
+    // Meshes and CSG solids: their own scalar test, ray by ray.
+    uint32_t entries[kTraversalStackSize];
+    AnyStack stack{entries, kTraversalStackSize, 0};
+    for (uint64_t m = live; m; m &= m - 1) {
+        const int i = __builtin_ctzll(m);
+        const Ray ray{origins.at(i), Vec3(rays.dx[i], rays.dy[i], rays.dz[i])};
+        const bool blocks =
+            visitObject(scene, o, [&](const auto& shape) { return objectBlocks(scene, shape, ray, rays.tMax[i], stack); });
+        if (blocks) blocked |= 1ull << i;
     }
+    return blocked;
 }
 
 }  // namespace packet_detail

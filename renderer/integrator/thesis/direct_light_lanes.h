@@ -11,42 +11,8 @@ namespace trazo {
 // Host: blocks of fewer cells take shadeFromPoint ray by ray (a packet's set-up costs more than it saves).
 constexpr uint32_t kMinShadowPacket = 4;
 
-// Host: evalCookTorrance(n, l, v, roughness) in SIMD lanes, one l per lane, operation for operation (minOf(a, b)
-// is a < b ? a : b, maxOf a > b ? a : b); n, v and the roughness one for all lanes (Vec3, float) or one per lane
-// (V3, LaneF). expf only in the lanes of `lanes` (libm's, lane by lane, as the scalar code calls it).
-template <class Vec, class Real>
-inline packet_detail::LaneF cookTorranceLanes(const Vec& n, const Vec& v, const packet_detail::V3& l, Real roughness,
-                                              uint64_t lanes) {
-    using namespace packet_detail;
-    const LaneF one = splat(1.0f);
-    const LaneF m = maxOf(asLanes(roughness), splat(0.01f));
-    const V3 sum = {l.x + v.x, l.y + v.y, l.z + v.z};
-    const LaneF inv = 1.0f / sqrt(dot(sum, sum));
-    const V3 h = {sum.x * inv, sum.y * inv, sum.z * inv};
-    const LaneF nh0 = dot(n, h);
-    const LaneF nh = nh0 < 1.0f ? nh0 : one;
-    const LaneF nv = asLanes(dot(n, v));
-    const LaneF nl = dot(n, l);
-    const LaneF vh = dot(v, h);
-    const LaneI none = (nh <= 0.0f) | (vh <= 0.0f);
-    const LaneF nh2 = nh * nh;
-    const LaneF tan2 = (1.0f - nh2) / nh2;
-    const LaneF m2 = m * m;
-    const LaneF exponent = -tan2 / m2;
-    LaneF e = splat(0.0f);
-    for (uint64_t left = lanes & ~bits(none); left; left &= left - 1) {
-        const int i = __builtin_ctzll(left);
-        e[i] = expf(exponent[i]);
-    }
-    const LaneF piD = e / (m2 * nh2 * nh2);
-    const LaneF nearer = nv < nl ? nv : nl;
-    const LaneF g2 = 2.0f * nh * nearer / vh;
-    const LaneF gTerm = 1.0f < g2 ? one : g2;
-    return none ? splat(0.0f) : piD * gTerm / (4.0f * nv);
-}
-
-// Host: brdf.eval(l) for the rays of `lanes` in group g of the packet, in SIMD lanes: PointBrdf::eval with
-// evalOrenNayar and evalCookTorrance (cookTorranceLanes) operation for operation.
+// Host: brdf.eval(l) for the rays of `lanes` in group g of the packet, in SIMD lanes (evalOrenNayarOf and
+// cookTorranceOf for LaneOps, the point's n, v and view one for all lanes).
 inline void evalBrdfLanes(const PointBrdf& brdf, const RayPacket& packet, int g, uint64_t lanes, float* fx,
                           float* fy, float* fz) {
     using namespace packet_detail;
@@ -55,21 +21,12 @@ inline void evalBrdfLanes(const PointBrdf& brdf, const RayPacket& packet, int g,
     const Vec3 n = brdf.sp.n;
     V3 f = {splat(0.0f), splat(0.0f), splat(0.0f)};
     if (brdf.hasDiffuse) {
-        const OrenNayarView& w = brdf.diffuseView;
-        const LaneF nl = dot(n, l);
-        const LaneF cosL = nl < 1.0f ? nl : splat(1.0f);
-        LaneF on = cosL * w.a;
-        if (w.b != 0.0f) {
-            const LaneF lvt = dot(w.vt, l);
-            const LaneF azimuth = 0.0f > lvt ? splat(0.0f) : lvt;
-            const LaneF slope = cosL <= w.cosV ? (cosL / w.cosV) * w.sinV : splat(w.sinV);
-            on = cosL * w.a + w.b * azimuth * slope;
-        }
+        const LaneF on = evalOrenNayarOf<LaneOps>(brdf.diffuseView, n, l);
         const Vec3 d = brdf.m.diffuse;
         f = {d.x * on, d.y * on, d.z * on};
     }
     if (brdf.hasSpecular) {
-        const LaneF ct = cookTorranceLanes(n, brdf.sp.v, l, brdf.m.roughness, lanes);
+        const LaneF ct = cookTorranceOf<LaneOps>(n, l, brdf.sp.v, brdf.m.roughness, laneMask(lanes));
         const Vec3 sp = brdf.m.specular;
         f = {f.x + sp.x * ct, f.y + sp.y * ct, f.z + sp.z * ct};
     }
@@ -164,40 +121,20 @@ struct PointLanes {
 };
 
 // Host: PointBrdf(sp, m).eval(l) of the point and material in lane i of q, in lane i of the group at lane offset
-// o, for the lanes of `lanes` (bit k: lane o + k): orenNayarView and evalOrenNayar operation for operation, then
-// cookTorranceLanes, a black lobe adding nothing.
+// o, for the lanes of `lanes` (bit k: lane o + k): orenNayarViewOf, evalOrenNayarOf and cookTorranceOf for
+// LaneOps, a black lobe adding nothing.
 inline packet_detail::V3 evalPointBrdfLanes(const PointLanes& q, int o, const packet_detail::V3& l, uint64_t lanes) {
     using namespace packet_detail;
     const V3 n = PointLanes::lanes(q.nx, q.ny, q.nz, o), v = PointLanes::lanes(q.vx, q.vy, q.vz, o);
     const V3 kd = PointLanes::lanes(q.dr, q.dg, q.db, o), ks = PointLanes::lanes(q.sr, q.sg, q.sb, o);
     const LaneF sigma = load(q.roughness + o);
-    const LaneF zero = splat(0.0f), one = splat(1.0f);
-    // orenNayarView
-    const LaneF s2 = sigma * sigma;
-    const LaneF a = 1.0f - 0.5f * s2 / (s2 + 0.33f);
-    const LaneF b = 0.45f * s2 / (s2 + 0.09f);
-    const LaneF nv = dot(n, v);
-    const LaneF cosV = nv < 1.0f ? nv : one;
-    const LaneF sin2 = 1.0f - cosV * cosV;
-    const LaneF sinV = sqrt(0.0f > sin2 ? zero : sin2);
-    const V3 vt0 = {v.x - n.x * cosV, v.y - n.y * cosV, v.z - n.z * cosV};
-    const LaneF vt2 = dot(vt0, vt0);
-    const LaneF invVt = 1.0f / sqrt(vt2);
-    const LaneI hasVt = vt2 > 0.0f;
-    const V3 vt = {hasVt ? vt0.x * invVt : zero, hasVt ? vt0.y * invVt : zero, hasVt ? vt0.z * invVt : zero};
-    // evalOrenNayar
-    const LaneF nl = dot(n, l);
-    const LaneF cosL = nl < 1.0f ? nl : one;
-    const LaneF lvt = dot(l, vt);
-    const LaneF azimuth = 0.0f > lvt ? zero : lvt;
-    const LaneF slope = cosL <= cosV ? (cosL / cosV) * sinV : sinV;
-    const LaneF on = b == 0.0f ? cosL * a : cosL * a + b * azimuth * slope;
-    const LaneI diffuse = ~((kd.x == 0.0f) & (kd.y == 0.0f) & (kd.z == 0.0f));
+    const LaneF zero = splat(0.0f);
+    const LaneF on = evalOrenNayarOf<LaneOps>(orenNayarViewOf<LaneOps>(n, v, sigma), n, l);
+    const LaneI diffuse = !((kd.x == 0.0f) & (kd.y == 0.0f) & (kd.z == 0.0f));
     V3 f = {diffuse ? kd.x * on : zero, diffuse ? kd.y * on : zero, diffuse ? kd.z * on : zero};
-    const LaneI specular = ~((ks.x == 0.0f) & (ks.y == 0.0f) & (ks.z == 0.0f));
-    const uint64_t specularLanes = lanes & bits(specular);
-    if (!specularLanes) return f;
-    const LaneF ct = cookTorranceLanes(n, v, l, sigma, specularLanes);
+    const LaneI specular = laneMask(lanes) & !((ks.x == 0.0f) & (ks.y == 0.0f) & (ks.z == 0.0f));
+    if (!LaneOps::any(specular)) return f;
+    const LaneF ct = cookTorranceOf<LaneOps>(n, l, v, sigma, specular);
     return {specular ? f.x + ks.x * ct : f.x, specular ? f.y + ks.y * ct : f.y, specular ? f.z + ks.z * ct : f.z};
 }
 

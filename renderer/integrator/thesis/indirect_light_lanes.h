@@ -150,8 +150,8 @@ inline uint64_t indirectDirectionsLanes(const ConeFrame& about, const StrataBloc
         const LaneF theta = (load(column + o) + unitFloats(rng.key, draw)) / float(q) * 1.57079632679f;
         const LaneF phi = (load(row + o) + unitFloats(rng.key, draw + 1u)) / float(2 * q) * 6.28318530718f;
         LaneF st, ct, sp, cp;  // directionInCone
-        sinCosOf<LaneTrig>(theta, st, ct);
-        sinCosOf<LaneTrig>(phi, sp, cp);
+        sinCosOf<LaneOps>(theta, st, ct);
+        sinCosOf<LaneOps>(phi, sp, cp);
         const V3 v = {a.x * ct + (t1.x * cp + t2.x * sp) * st, a.y * ct + (t1.y * cp + t2.y * sp) * st,
                       a.z * ct + (t1.z * cp + t2.z * sp) * st};
         const LaneF inv = 1.0f / sqrt(dot(v, v));
