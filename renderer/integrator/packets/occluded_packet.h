@@ -5,7 +5,7 @@
 // bit: a ray meets the same boxes (the slab test of intersectChildren, the same IEEE operations in the same
 // order), so it reaches the same leaves, and the shapes' tests in lanes are their scalar tests' own template.
 // Meshes and CSG solids take their scalar objectBlocks, ray by ray. aimShadowRays computes the rays of an
-// area light's cells in the same lanes (integrator/direct_light.h, shadeCellsTogether).
+// area light's cells in the same lanes (integrator/thesis/direct_light_lanes.h, shadeCellsTogether).
 #pragma once
 
 #include "integrator/packets/packet_lanes.h"
@@ -44,7 +44,7 @@ struct AimedRays {
 };
 
 // Ray k of `out` aims at the jittered point of the cell in column[k], row[k] of the rectangle's cellsU × cellsV
-// grid, as cellPoint and shadeFromPoint compute it (integrator/direct_light.h): the same operations in the same
+// grid, as cellPoint and shadeFromPoint compute it (lights/area_light.h, integrator/thesis/shade_from_point.h): the same operations in the same
 // order, kPacketRays lanes of them, with cell k's two draws at rng dimensions dimension + 2k (u) and + 2k + 1
 // (v) of the stream `key` (the caller moves its stream on by 2 per cell). p, n, ng: the shading point, its
 // shading and geometric normals; above and below: its ray origins towards ±ng (ShadingPoint::rayOrigin).
