@@ -63,7 +63,7 @@ TRAZO_HD auto sphereBeyondReach(const O& f, const D& d, F reach2) {
 }
 
 template <class T>
-TRAZO_HD SphereSetupOf<T> sphereSetupOf(const SphereShape& s, const typename T::V& origin) {
+TRAZO_HD_HOT SphereSetupOf<T> sphereSetupOf(const SphereShape& s, const typename T::V& origin) {
     using Two = TwoOf<typename T::F>;
     const Two fx = twoSum(origin.x, T::splat(-s.center.x));
     const Two fy = twoSum(origin.y, T::splat(-s.center.y));
@@ -88,8 +88,8 @@ using SphereRoots = SphereRootsOf<ScalarOps>;
 // The two roots of the lines from the setup's origin along d, where they meet the sphere: `live` keeps those rays.
 // Whether any does.
 template <class T, class Setup>
-TRAZO_HD bool sphereRootsOf(const Setup& k, float r, const typename T::V& d, typename T::B& live,
-                            SphereRootsOf<T>& out) {
+TRAZO_HD_HOT bool sphereRootsOf(const Setup& k, float r, const typename T::V& d, typename T::B& live,
+                                SphereRootsOf<T>& out) {
     const auto& f = k.f;
     const auto& fLo = k.fLo;
     const auto c = k.c;
