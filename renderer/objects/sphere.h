@@ -36,7 +36,8 @@ struct SphereShape {
 //    and b² − a·c (from accurate b, c) errs by ~ε·(b² + a·|c|): each form is used where it is the
 //    better one. l comes from d × (f × d)/a, with f × d compensated, so it is accurate to ε·|l|
 //    rather than ε·|f| (RTG's subtraction) — and so is the normal, from l ∓ d·√Δ/a.
-// The roots below are written over the number type T (core/number_ops.h), once for a ray and for SIMD lanes
+//
+// The roots are written over the number type T (core/number_ops.h), once for a ray and for SIMD lanes
 // (integrator/packets/packet_lanes.h), whose rays may share an origin (a Vec3 and floats where V and F are lanes).
 
 // What the roots need of the ray's origin o, once for all rays from it: f = o − centre exactly as f + fLo
@@ -115,7 +116,7 @@ TRAZO_HD_HOT bool sphereRootsOf(const Setup& k, float r, const typename T::V& d,
 
 // The two roots of the line through the ray, or false when it misses the sphere.
 TRAZO_HD bool sphereRoots(const SphereShape& s, const Ray& ray, SphereRoots& out) {
-    const Vec3 f = ray.origin - s.center;
+    const Vec3 f = ray.origin - s.center;  // the reject before the compensated set-up: most rays miss
     if (sphereBeyondReach(f, ray.direction, sphereReach2<ScalarOps>(s, ray.origin, f))) return false;
     bool live = true;
     return sphereRootsOf<ScalarOps>(sphereSetupOf<ScalarOps>(s, ray.origin), s.radius, ray.direction, live, out);
