@@ -38,9 +38,9 @@ TRAZO_HD Vec3 boxFaceNormal(const BoxShape& box, int axis, float sign) {
 // the rays parallel to a slab outside it. Whether any is left. The box is closed: a line lying in a face's plane
 // counts as inside that slab. The line meets the box where tEnter ≤ tExit.
 template <class T, class O>
-TRAZO_HD bool boxSlabsOf(const BoxShape& box, const O& originWorld, const typename T::V& directionWorld,
-                         typename T::B& live, typename T::F& tEnter, typename T::F& tExit, typename T::I& enterFace,
-                         typename T::I& exitFace) {
+TRAZO_HD_HOT bool boxSlabsOf(const BoxShape& box, const O& originWorld, const typename T::V& directionWorld,
+                             typename T::B& live, typename T::F& tEnter, typename T::F& tExit,
+                             typename T::I& enterFace, typename T::I& exitFace) {
     // The object-space ray is not normalised, so its t is the world t (an affine map keeps ratios).
     const O o = applyToPoint(box.objectFromWorld, originWorld);
     const typename T::V d = applyToVector(box.objectFromWorld, directionWorld);

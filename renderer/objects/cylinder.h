@@ -31,9 +31,9 @@ struct CylinderShape {
 // origin, a Vec3): returns the rays of `live` that hit, their t in tBest and, where asked, the outward normal's
 // direction (not unit) in *normal. Closed: a ray through the rim hits.
 template <class T, class O>
-TRAZO_HD typename T::B cylinderHitsOf(const CylinderShape& cyl, const O& origin, const typename T::V& d,
-                                      float tMin, typename T::B live, typename T::F& tBest,
-                                      typename T::V* normal) {
+TRAZO_HD_HOT typename T::B cylinderHitsOf(const CylinderShape& cyl, const O& origin, const typename T::V& d,
+                                          float tMin, typename T::B live, typename T::F& tBest,
+                                          typename T::V* normal) {
     using F = typename T::F;
     using B = typename T::B;
     const Vec3 axis = cyl.axis;

@@ -36,7 +36,8 @@ struct SphereShape {
 //    and b² − a·c (from accurate b, c) errs by ~ε·(b² + a·|c|): each form is used where it is the
 //    better one. l comes from d × (f × d)/a, with f × d compensated, so it is accurate to ε·|l|
 //    rather than ε·|f| (RTG's subtraction) — and so is the normal, from l ∓ d·√Δ/a.
-// The roots below are written over the number type T (core/number_ops.h), once for a ray and for SIMD lanes
+//
+// The roots are written over the number type T (core/number_ops.h), once for a ray and for SIMD lanes
 // (integrator/packets/packet_lanes.h), whose rays may share an origin (a Vec3 and floats where V and F are lanes).
 
 // What the roots need of the ray's origin o, once for all rays from it: f = o − centre exactly as f + fLo
@@ -63,7 +64,7 @@ TRAZO_HD auto sphereBeyondReach(const O& f, const D& d, F reach2) {
 }
 
 template <class T>
-TRAZO_HD SphereSetupOf<T> sphereSetupOf(const SphereShape& s, const typename T::V& origin) {
+TRAZO_HD_HOT SphereSetupOf<T> sphereSetupOf(const SphereShape& s, const typename T::V& origin) {
     using Two = TwoOf<typename T::F>;
     const Two fx = twoSum(origin.x, T::splat(-s.center.x));
     const Two fy = twoSum(origin.y, T::splat(-s.center.y));
@@ -88,8 +89,8 @@ using SphereRoots = SphereRootsOf<ScalarOps>;
 // The two roots of the lines from the setup's origin along d, where they meet the sphere: `live` keeps those rays.
 // Whether any does.
 template <class T, class Setup>
-TRAZO_HD bool sphereRootsOf(const Setup& k, float r, const typename T::V& d, typename T::B& live,
-                            SphereRootsOf<T>& out) {
+TRAZO_HD_HOT bool sphereRootsOf(const Setup& k, float r, const typename T::V& d, typename T::B& live,
+                                SphereRootsOf<T>& out) {
     const auto& f = k.f;
     const auto& fLo = k.fLo;
     const auto c = k.c;
@@ -115,7 +116,7 @@ TRAZO_HD bool sphereRootsOf(const Setup& k, float r, const typename T::V& d, typ
 
 // The two roots of the line through the ray, or false when it misses the sphere.
 TRAZO_HD bool sphereRoots(const SphereShape& s, const Ray& ray, SphereRoots& out) {
-    const Vec3 f = ray.origin - s.center;
+    const Vec3 f = ray.origin - s.center;  // the reject before the compensated set-up: most rays miss
     if (sphereBeyondReach(f, ray.direction, sphereReach2<ScalarOps>(s, ray.origin, f))) return false;
     bool live = true;
     return sphereRootsOf<ScalarOps>(sphereSetupOf<ScalarOps>(s, ray.origin), s.radius, ray.direction, live, out);

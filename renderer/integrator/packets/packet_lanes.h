@@ -82,9 +82,13 @@ inline uint64_t bits(LaneI m) {
 }
 // Lane i true (−1) where bit i of `rays` is set: bits' inverse.
 inline LaneI laneMask(uint64_t rays) {
+#if defined(__AVX512F__)
+    return (LaneI)_mm512_maskz_mov_epi32((__mmask16)rays, _mm512_set1_epi32(-1));
+#else
     LaneI bit;
     for (int i = 0; i < kLanes; ++i) bit[i] = int32_t(1u << i);
-    return ((LaneI{} + int32_t(rays & kGroupBits)) & bit) != 0;
+    return ((LaneI{} + int32_t(rays)) & bit) == bit;
+#endif
 }
 inline LaneF sqrt(LaneF x) {
 #if defined(__AVX512F__)
@@ -124,7 +128,7 @@ inline LaneF unitFloats(uint32_t key, LaneU dimension) {
 // operand is one vector for all lanes.
 struct V3 {
     LaneF x, y, z;
-    const LaneF& operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
+    LaneF operator[](int axis) const { return axis == 0 ? x : (axis == 1 ? y : z); }
 };
 inline V3 operator+(const V3& a, const V3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 inline V3 operator+(const V3& a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
@@ -205,11 +209,14 @@ inline Group loadGroup(const RayPacket& p, int g) {
     return {{load(p.dx + o), load(p.dy + o), load(p.dz + o)}, load(p.tMax + o)};
 }
 
+// The shapes' tests in lanes are inlined (TRAZO_HD_HOT) into the traversals' loops, where GCC would otherwise call
+// some out of line.
+
 // intersectSphere(s, Ray{origin, d}, 0, tMax, hit) lane by lane for the rays of `live`, hit.t in tHit and, when
 // asked for, hit.normal in normal. Setup: sphereSetupOf<ScalarOps> (one origin) or <LaneOps> (the group's own).
 template <class Setup>
-inline uint64_t sphereHits(const SphereShape& s, const Setup& k, const Group& ray, uint64_t live, LaneF& tHit,
-                           V3* normal = nullptr) {
+TRAZO_HD_HOT uint64_t sphereHits(const SphereShape& s, const Setup& k, const Group& ray, uint64_t live, LaneF& tHit,
+                                 V3* normal = nullptr) {
     LaneI lanes = laneMask(live) & !sphereBeyondReach(k.f, ray.d, k.reach2);
     if (!LaneOps::any(lanes)) return 0;
     SphereRootsOf<LaneOps> roots;
@@ -228,8 +235,8 @@ inline uint64_t sphereHits(const SphereShape& s, const Setup& k, const Group& ra
 // intersectBox(box, Ray{origin, d}, 0, tMax, hit) lane by lane: the lanes that hit, in tHit their hit.t and in
 // face their hit.triangle (the face, boxSlabsOf). Origin: a Vec3 (one origin) or V3 (the group's own).
 template <class Origin>
-inline uint64_t boxHits(const BoxShape& box, const Origin& origin, const Group& ray, uint64_t live, LaneF& tHit,
-                        LaneI& face) {
+TRAZO_HD_HOT uint64_t boxHits(const BoxShape& box, const Origin& origin, const Group& ray, uint64_t live, LaneF& tHit,
+                              LaneI& face) {
     LaneI lanes = laneMask(live), enterFace, exitFace;
     LaneF tEnter, tExit;
     if (!boxSlabsOf<LaneOps>(box, origin, ray.d, lanes, tEnter, tExit, enterFace, exitFace)) return 0;
@@ -242,8 +249,8 @@ inline uint64_t boxHits(const BoxShape& box, const Origin& origin, const Group& 
 
 // intersectCylinder(c, Ray{origin, d}, 0, tMax, hit) lane by lane: the lanes that hit, and in tHit their hit.t.
 template <class Origin>
-inline uint64_t cylinderHits(const CylinderShape& cyl, const Origin& origin, const Group& ray, uint64_t live,
-                             LaneF& tHit) {
+TRAZO_HD_HOT uint64_t cylinderHits(const CylinderShape& cyl, const Origin& origin, const Group& ray, uint64_t live,
+                                   LaneF& tHit) {
     tHit = ray.tMax;
     return bits(cylinderHitsOf<LaneOps>(cyl, origin, ray.d, 0.0f, laneMask(live), tHit, nullptr));
 }
@@ -329,7 +336,7 @@ struct OwnOrigins {
     struct SphereSetups {
         const OwnOrigins& origins;
         const SphereShape& s;
-        SphereSetupOf<LaneOps> group(int g) const { return sphereSetupOf<LaneOps>(s, origins.group(g)); }
+        TRAZO_HD_HOT SphereSetupOf<LaneOps> group(int g) const { return sphereSetupOf<LaneOps>(s, origins.group(g)); }
     };
     SphereSetups sphereSetups(const SphereShape& s) const { return {*this, s}; }
 };
