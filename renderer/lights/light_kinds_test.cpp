@@ -11,31 +11,10 @@
 #include "flatten/scene_arrays.h"
 #include "lights/visit_light.h"
 #include "scene/kinds/light_kind_model.h"
-#include "shading/scattering.h"
+#include "support/sphere_patch.h"
 
 namespace trazo {
 namespace {
-
-constexpr double kTwoPi = 2.0 * M_PI;
-
-// The direction at polar angle θ, azimuth φ about `axis`.
-Vec3 around(const ConeFrame& f, double theta, double phi) {
-    return normalize(f.axis * float(std::cos(theta)) +
-                     (f.t1 * float(std::cos(phi)) + f.t2 * float(std::sin(phi))) * float(std::sin(theta)));
-}
-
-// ∫ g dω over the sphere on a θ, φ grid about `axis` (where a small light's directions crowd).
-template <class G>
-double sphereIntegral(Vec3 axis, G&& g, int thetaCells = 1200, int phiCells = 600) {
-    const ConeFrame f = coneFrame(axis);
-    const double dTheta = M_PI / thetaCells, dPhi = kTwoPi / phiCells;
-    double sum = 0.0;
-    for (int i = 0; i < thetaCells; ++i) {
-        const double theta = (i + 0.5) * dTheta;
-        for (int j = 0; j < phiCells; ++j) sum += g(around(f, theta, (j + 0.5) * dPhi)) * std::sin(theta);
-    }
-    return sum * dTheta * dPhi;
-}
 
 // The kind's light as the editor adds it at `at` (size 1, colour (2, 1, 0.5)), flattened by its appendLight.
 template <class Kind, class Data>
@@ -79,9 +58,10 @@ void expectSpecReading(const char* keyword) {
         }
         irradiance /= kSamples;
         const Vec3 toward = normalize(lightBounds(light).centroid() - p);
-        EXPECT_NEAR(sphereIntegral(toward, [&](Vec3 w) { return pdfLi(light, p, w); }), 1.0, 5e-3);
+        const test::SpherePatch around{toward};  // a fine θ grid: a small light's directions crowd about it
+        EXPECT_NEAR(around.integral([&](Vec3 w) { return pdfLi(light, p, w); }, 1200), 1.0, 5e-3);
         const double integrated =
-            sphereIntegral(toward, [&](Vec3 w) { return arrivingLi(light, p, w).x * std::fabs(w.y); });
+            around.integral([&](Vec3 w) { return arrivingLi(light, p, w).x * std::fabs(w.y); }, 1200);
         EXPECT_NEAR(irradiance, integrated, 0.02 * integrated + 1e-6);
     }
 }

@@ -10,6 +10,8 @@
 #include <random>
 #include <vector>
 
+#include "support/sphere_patch.h"
+
 namespace trazo {
 namespace {
 
@@ -36,29 +38,7 @@ Vec3 directionAt(float cosTheta, float phi) {
     return Vec3(s * std::cos(phi), s * std::sin(phi), cosTheta);
 }
 
-// The directions at polar angle θ ≤ thetaMax about `axis` (a lobe's axis: a cone's density is singular there, and
-// the measure sin θ dθ dφ of this grid cancels it).
-struct Patch {
-    Vec3 axis = kN;
-    float thetaMax = kPi;
-
-    Vec3 at(double theta, double phi) const {
-        const ConeFrame f = coneFrame(axis);
-        return normalize(f.axis * float(std::cos(theta)) +
-                         (f.t1 * float(std::cos(phi)) + f.t2 * float(std::sin(phi))) * float(std::sin(theta)));
-    }
-    // ∫ g dω over the patch, midpoints of a thetaCells × phiCells grid.
-    template <class G>
-    double integral(G&& g, int thetaCells = 600, int phiCells = 600) const {
-        double sum = 0.0;
-        const double dTheta = thetaMax / thetaCells, dPhi = 2.0 * M_PI / phiCells;
-        for (int i = 0; i < thetaCells; ++i) {
-            const double theta = (i + 0.5) * dTheta;
-            for (int j = 0; j < phiCells; ++j) sum += g(at(theta, (j + 0.5) * dPhi)) * std::sin(theta);
-        }
-        return sum * dTheta * dPhi;
-    }
-};
+using Patch = test::SpherePatch;
 
 struct Case {
     const char* name;
