@@ -71,12 +71,12 @@ table=$(while read -r mangled regs stack stores loads; do
   warps=$(( 65536 / perWarp )); (( warps > 64 )) && warps=64
   warps=$(( warps / (block / 32) * (block / 32) ))
   # Feature bits (core/feature_mask.h): 2 area lights, 4 reflection, 16 refraction, 64 indirect, 1024
-  # dispersion, 2048 subsurface.
+  # dispersion, 2048 subsurface, 4096 environment map.
   features=0
   [[ $kernel =~ [\<\ ]([0-9]+)u?\> ]] && features=${BASH_REMATCH[1]}
   spillBudget=256; (( features & 64 )) && spillBudget=656
   (( (features & 64) && (features & 2) && (features & (4 | 16)) )) && spillBudget=752
-  (( features & (1024 | 2048) )) && spillBudget=704
+  (( features & (1024 | 2048 | 4096) )) && spillBudget=704
   [[ $kernel == renderPassKernel\<path* ]] && spillBudget=640
   stackBudget=$(( 1536 + (stores + 15) / 16 * 16 ))  # spill slots take whole 16-byte steps of the frame
   (( features & (4 | 16) )) && stackBudget=$(( stackBudget + 1408 ))

@@ -20,7 +20,8 @@ namespace trazo {
     X(kFeatureMeshes, "meshes")                                                                             \
     X(kFeatureCsg, "csg")                                                                                   \
     X(kFeatureDispersion, "dispersion") /* a material with Opacity < 1 has Dispersion > 0 (SPEC §6) */      \
-    X(kFeatureSubsurface, "subsurface") /* a material has a ScatteringDistance (SPEC §6) */
+    X(kFeatureSubsurface, "subsurface") /* a material has a ScatteringDistance (SPEC §6) */                  \
+    X(kFeatureEnvironmentMap, "environment-map") /* SceneSettings EnvironmentMap (SPEC §7) */
 
 // Bit positions, in list order.
 enum FeatureBit : uint32_t {

@@ -168,6 +168,7 @@ FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
     if (s.indirectQuality >= 1 && s.colorBleeding > 0.0f) f |= kFeatureIndirect;
     if (!scene.meshes.empty()) f |= kFeatureMeshes;
     if (!scene.csgs.empty()) f |= kFeatureCsg;
+    if (!out.environment.empty() && out.environment[0].texture >= 0) f |= kFeatureEnvironmentMap;
     out.features = f;
 
     return result;

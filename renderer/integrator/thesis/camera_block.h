@@ -47,7 +47,7 @@ inline void shadeCameraHits(const SceneView& scene, const TracedRay* hits, uint6
         const TracedRay& r = hits[i];
         Vec3 c(0.0f);
         if (!r.found) {
-            c += weight * scene.settings.background;
+            c += weight * missRadiance<kAllSampleFeatures>(scene, r.ray.direction);
         } else if (r.hit.object == kNoObject) {
             c += weight * scene.areaLights[r.hit.areaLight].color;
         } else {

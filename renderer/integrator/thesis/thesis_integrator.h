@@ -16,7 +16,8 @@ constexpr FeatureMask kSpecialisedFeatures =
 // SPEC §6's dispersion and subsurface scattering: a scene that uses either takes one more instance, with every
 // feature on. The 16 instances of the other features compile exactly as without them (the same code,
 // registers and spills), and a bit each would have doubled the instances, and the CUDA build, twice over.
-constexpr FeatureMask kRareFeatures = kFeatureDispersion | kFeatureSubsurface;
+// SPEC §7's EnvironmentMap, which a missed ray reads under the thesis's model too, joins them.
+constexpr FeatureMask kRareFeatures = kFeatureDispersion | kFeatureSubsurface | kFeatureEnvironmentMap;
 constexpr FeatureMask kAllSampleFeatures = kSpecialisedFeatures | kRareFeatures;
 
 // One sample of one pixel: the pass's block of antialiasing positions, averaged. `given` (host x86 only, else

@@ -10,10 +10,20 @@
 #include "integrator/surface.h"
 #include "integrator/thesis/direct_light.h"
 #include "integrator/thesis/indirect_light.h"
+#include "lights/environment.h"
 #include "shading/dispersion.h"
 #include "shading/fresnel.h"
 
 namespace trazo {
+
+// What a ray that leaves the scene returns (SPEC §5, and §7's Environment): BackgroundColor, times the
+// EnvironmentMap's texel where the scene has one (only the instance with every feature reads it).
+template <FeatureMask F>
+TRAZO_HD Vec3 missRadiance(const SceneView& scene, Vec3 d) {
+    if constexpr ((F & kFeatureEnvironmentMap) != 0)
+        if (scene.features & kFeatureEnvironmentMap) return environmentRadiance(scene, d);
+    return scene.settings.background;
+}
 
 constexpr int kMaxPendingRays = 32;                 // a branch that would overflow contributes 0
 constexpr uint32_t kMaxTransmissionSegments = 16;   // SPEC §5: longer chains contribute 0
@@ -207,7 +217,7 @@ TRAZO_HD Vec3 traceCameraRay(const SceneView& scene, const Ray& cameraRay, const
         const bool walkExit = kSubsurface && r.segments == kSubsurfaceExit;
         if (walkExit && (!found || hit.object == kNoObject)) continue;  // the walk's exit not found again: 0
         if (!found) {
-            color += r.weight * settings.background;
+            color += r.weight * missRadiance<F>(scene, r.ray.direction);
             continue;
         }
         if (hit.object == kNoObject) {  // area-light rectangles are visible and return their colour
