@@ -46,7 +46,8 @@ int expectWidgetLimitsAreTheReaders(std::span<const ParamSpec<Target>> table, Ta
         const ParamInfo& info = table[k].info;
         const ParamWidget w = widgetFor(info);
         // Numbers only: a word list's combo offers only its words (ParamWidget::Kind::Words).
-        if (w.kind == ParamWidget::Kind::None || (info.kind != ValueKind::Real && info.kind != ValueKind::Int)) continue;
+        const bool numeric = info.kind == ValueKind::Real || info.kind == ValueKind::Int;
+        if (w.kind == ParamWidget::Kind::None || !numeric) continue;
         ++widgets;
         const std::string name(info.name);
         EXPECT_TRUE(accepted(table, k, w.min, target)) << name << " at its widget's minimum " << w.min;
