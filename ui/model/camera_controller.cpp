@@ -22,6 +22,13 @@ void cameraAxes(const Camera& c, Vec3& forward, Vec3& right, Vec3& up) {
 
 }  // namespace
 
+float focalDistanceTo(const Camera& camera, Vec3 point) {
+    const Vec3 view = camera.poi - camera.pov;
+    const float length = std::sqrt(dot(view, view));
+    if (!(length > 0.0f)) return 0.0f;
+    return dot(point - camera.pov, view) / length;
+}
+
 Aabb sceneBounds(const SceneArrays& arrays) {
     Aabb b;
     if (!arrays.topNodes.empty()) b.grow(wideNodeBounds(arrays.topNodes[0]));

@@ -11,6 +11,10 @@ namespace trazo {
 // World bounds of what a flattened scene draws (its top-level BVH's root) and of its lights.
 Aabb sceneBounds(const SceneArrays& arrays);
 
+// The FocalDistance that puts `point` in focus (SPEC §6: the focus plane is perpendicular to the view): its
+// distance along the view direction, dot(point − POV, normalize(POI − POV)); ≤ 0 for a point not in front.
+float focalDistanceTo(const Camera& camera, Vec3 point);
+
 struct CameraControllerSettings {
     float orbitRadiansPerPixel = 0.005f;
     float dollyFactorPerNotch = 0.85f;  // distance to the POI is multiplied by this per wheel notch forward

@@ -76,7 +76,9 @@ DirtyFlags EditHistory::swap(std::deque<Step>& from, std::deque<Step>& to, Scene
     current.path = opposite.scene.path;  // where the scene is saved is no edit
     if (!(step.changed & kDirtyCamera)) current.camera = opposite.scene.camera;
     current_ = step.state;
-    DirtyFlags dirty = kDirtyScene | (step.changed & (kDirtyCamera | kDirtySize));
+    // A step that changed only how the image is shown (Exposure, ViewTransform) keeps the accumulation.
+    DirtyFlags dirty = step.changed == kDirtyDisplay ? kDirtyDisplay
+                                                     : kDirtyScene | (step.changed & (kDirtyCamera | kDirtySize));
     if (current.settings.renderWidth != opposite.scene.settings.renderWidth ||
         current.settings.renderHeight != opposite.scene.settings.renderHeight)
         dirty |= kDirtySize;

@@ -31,7 +31,8 @@ public:
     // Puts back the scene before the last step (redo: after the next undone one). The camera is put back
     // only when the step changed it (kDirtyCamera), so orbiting between edits is kept; the scene's path
     // (where it is saved) is never changed. Returns what to redo in the viewer: kDirtyScene, plus the step's
-    // kDirtyCamera and kDirtySize; kDirtyNone when there was nothing to undo (redo).
+    // kDirtyCamera and kDirtySize; only kDirtyDisplay for a step that changed only that (Exposure,
+    // ViewTransform); kDirtyNone when there was nothing to undo (redo).
     DirtyFlags undo(Scene& current);
     DirtyFlags redo(Scene& current);
     bool canUndo() const { return !undo_.empty(); }

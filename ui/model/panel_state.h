@@ -13,11 +13,6 @@
 
 namespace trazo {
 
-struct ToneSettings {
-    float exposureStops = 0.0f;
-    int mode = 0;  // 0: the seed's clamp (what a PNG stores), 1: sRGB, 2: filmic
-};
-
 // Gesture ids for EditHistory::commit: the edits of one held widget share one; grabbing a widget (or the
 // viewer starting a drag, beginGesture) hands out the next. One-shot edits (a click, a combo choice) get 0.
 struct Gestures {
@@ -37,7 +32,12 @@ struct ObjectsPanelState {
 
 struct PanelState {
     int material = 0;  // selected in the Materials panel
-    ToneSettings tone;
+    // The Scene settings panel's EnvironmentMap field: what is typed (the scene's path while not being edited),
+    // and why the last path typed did not load.
+    char environmentPath[1024] = {};
+    bool environmentEditing = false;
+    std::string environmentStatus;
+    bool focusPick = false;  // "Focus here": the next click on the image sets the camera's FocalDistance
     BackendChoice backend = BackendChoice::Cpu;  // the Render panel's choice: Cpu or Cuda
     int targetPasses = 0;      // stop after this many one-stratum passes' worth of samples; 0 = keep going
     bool sizeFollowsWindow = false;  // the image area's size

@@ -3,6 +3,8 @@
 
 #include <cstdio>
 
+#include "model/camera_controller.h"
+
 namespace trazo {
 
 SceneEditor::SceneEditor(ViewerSession& session, const std::string& scenePath)
@@ -49,6 +51,21 @@ DirtyFlags SceneEditor::historyStepped(DirtyFlags changed) {
 void SceneEditor::click(ImagePoint p) {
     selector_.click(session_, objects_.selection, p);
     objects_.scrollToSelection = true;
+}
+
+DirtyFlags SceneEditor::focusAt(ImagePoint p) {
+    const std::optional<PickHit> hit = session_.pick(p.x, p.y);
+    if (!hit) return kDirtyNone;
+    Camera& camera = session_.scene().camera;
+    const float distance = focalDistanceTo(camera, hit->point);
+    if (!(distance > 0.0f) || distance == camera.focalDistance) return kDirtyNone;
+    const Scene before = session_.scene();
+    camera.focalDistance = distance;
+    std::fprintf(stderr, "trazo: focus at %g on %s\n", double(distance),
+                 selectionName(session_.scene(), hit->object).c_str());
+    commit(before, "Focus camera", kDirtyCamera | kDirtyScene);
+    cameraGesture_ = 0;  // the next navigation is a step of its own
+    return kDirtyCamera | kDirtyScene;
 }
 
 void SceneEditor::clearSelection() {

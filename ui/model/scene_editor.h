@@ -43,6 +43,10 @@ public:
 
     // Selection. A click at `p` (full-size image pixels) picks; the others act on the selection.
     void click(ImagePoint p);
+    // "Focus here": the camera's FocalDistance becomes the along-view distance (focalDistanceTo) of the surface
+    // the camera ray through `p` hits first, as one undo step (kDirtyCamera | kDirtyScene: the lens is fixed at
+    // flatten). The background, or a distance equal to the current one, changes nothing (kDirtyNone).
+    DirtyFlags focusAt(ImagePoint p);
     void clearSelection();
     DirtyFlags duplicateSelected();
     DirtyFlags deleteSelected();

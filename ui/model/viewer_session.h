@@ -37,7 +37,8 @@ public:
     Scene& scene() { return scene_; }
     const Scene& scene() const { return scene_; }
     const Scene& fileScene() const { return fileScene_; }  // as read, for "reset camera" and comparisons
-    void markDirty(DirtyFlags flags) { dirty_ |= flags; }
+    // kDirtyDisplay is the display's alone: the session ignores it (the accumulation goes on).
+    void markDirty(DirtyFlags flags) { dirty_ |= flags & ~kDirtyDisplay; }
     DirtyFlags dirty() const { return dirty_; }
     void setRenderSize(uint32_t width, uint32_t height);  // marks kDirtySize when it differs
     // Renders at 1/divisor of the render size in each direction (a preview while the user moves things);

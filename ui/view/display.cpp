@@ -1,8 +1,7 @@
-// Display: PBO → texture → full-screen triangle with the tone-mapping shader (GL 3.3 core).
+// Display: PBO → texture → full-screen triangle with the display-transform shader (GL 3.3 core).
 #include "view/display.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "display_shaders.h"
 #include "view/gl_check.h"
@@ -79,7 +78,7 @@ bool Display::init(std::string& error) {
     uOutline_ = glGetUniformLocation(program_, "outline");
     uHasOutline_ = glGetUniformLocation(program_, "hasOutline");
     uExposure_ = glGetUniformLocation(program_, "exposureScale");
-    uToneMode_ = glGetUniformLocation(program_, "toneMode");
+    uSrgb_ = glGetUniformLocation(program_, "srgb");
     uOutside_ = glGetUniformLocation(program_, "outsideColor");
     uEstimate_ = glGetUniformLocation(program_, "estimate");
 
@@ -178,7 +177,7 @@ void Display::setOutline(const std::vector<uint8_t>& mask, uint32_t width, uint3
 }
 
 void Display::draw(int framebufferWidth, int framebufferHeight, const ImageRect& area, const ImageRect& rect,
-                   const ToneSettings& tone) const {
+                   const DisplayTransform& transform) const {
     // The shader has gl_FragCoord from the bottom-left; the rectangles come from the top-left.
     const auto flipped = [&](const ImageRect& r) { return float(framebufferHeight) - r.y - r.height; };
     glViewport(0, 0, framebufferWidth, framebufferHeight);
@@ -187,8 +186,8 @@ void Display::draw(int framebufferWidth, int framebufferHeight, const ImageRect&
     glUseProgram(program_);
     glUniform4f(uImageRect_, rect.x, flipped(rect), std::max(rect.width, 1.0f), std::max(rect.height, 1.0f));
     glUniform4f(uAreaRect_, area.x, flipped(area), area.width, area.height);
-    glUniform1f(uExposure_, std::exp2(tone.exposureStops));
-    glUniform1i(uToneMode_, tone.mode);
+    glUniform1f(uExposure_, transform.scale);
+    glUniform1i(uSrgb_, transform.srgb ? 1 : 0);
     glUniform3f(uOutside_, kBackground[0], kBackground[1], kBackground[2]);
     glUniform1i(uEstimate_, 0);
     glUniform1i(uOutline_, 1);

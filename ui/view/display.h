@@ -1,7 +1,9 @@
 // Display: shows the accumulation in the window. A pixel-buffer object receives the estimate (sum / count as
 // float RGBA): written by the backend through CUDA-GL interop when it can, otherwise filled from the host
-// through a mapped pointer. It is copied into a float texture that the display shader (shaders/) tone-maps
-// into the window. GL code only; needs the window's context current.
+// through a mapped pointer. It is copied into a float texture that the display shader (shaders/) turns into
+// the window's bytes with the scene's DisplayTransform (SPEC §7: exposure, linear or sRGB, as an 8-bit file
+// stores them), so a new exposure or view transform is only a redraw. GL code only; needs the window's
+// context current.
 #pragma once
 
 #include <cstdint>
@@ -9,7 +11,7 @@
 #include <vector>
 
 #include "backends/backend.h"
-#include "model/panel_state.h"
+#include "core/view_transform.h"
 #include "model/image_placement.h"
 
 namespace trazo {
@@ -33,9 +35,10 @@ public:
     // image, row 0 = top; an empty mask shows none. Only the display sees it, never the accumulation.
     void setOutline(const std::vector<uint8_t>& mask, uint32_t width, uint32_t height);
     // Clears the framebuffer to the viewer's background (also the colour around the image), then draws the image
-    // into `rect` (framebuffer pixels from the top-left, ImagePlacement::rect) clipped to `area`.
+    // into `rect` (framebuffer pixels from the top-left, ImagePlacement::rect) clipped to `area`, each pixel
+    // round(255·transform.encode(estimate)) (model/setting_effects.h displayTransformOf).
     void draw(int framebufferWidth, int framebufferHeight, const ImageRect& area, const ImageRect& rect,
-              const ToneSettings& tone) const;
+              const DisplayTransform& transform) const;
 
     DisplayPath path() const { return path_; }
     const std::string& interopFailure() const { return interopFailure_; }
@@ -47,7 +50,7 @@ private:
     bool fillFromHost(Backend& backend);
 
     unsigned program_ = 0, vao_ = 0, texture_ = 0, pbo_ = 0, outline_ = 0;
-    int uImageRect_ = -1, uAreaRect_ = -1, uExposure_ = -1, uToneMode_ = -1, uOutside_ = -1, uEstimate_ = -1;
+    int uImageRect_ = -1, uAreaRect_ = -1, uExposure_ = -1, uSrgb_ = -1, uOutside_ = -1, uEstimate_ = -1;
     int uOutline_ = -1, uHasOutline_ = -1;
     bool hasOutline_ = false;
     uint32_t width_ = 0, height_ = 0;

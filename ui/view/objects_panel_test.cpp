@@ -11,6 +11,8 @@
 
 #include "model/edit_history.h"
 #include "scene/scene_writer.h"
+#include "view/panels.h"
+#include "view/param_editor.h"
 #include "test_paths.h"
 #include "test_scenes.h"
 
@@ -95,6 +97,34 @@ TEST(ObjectsPanel, DrawingEditsNothingAndBalancesImGuisStacks) {
         drawObjectsPanel(scene, state, actions, Vec3(0, 0, 0));
     });
     EXPECT_EQ(state.selection, std::nullopt);
+}
+
+// The Scene settings and Camera panels share the Objects panel's table-driven editors: their word lists (an
+// unwritten ViewTransform too), turn slider, EnvironmentMap field and Focus button draw without editing.
+TEST(ObjectsPanel, TheSettingsAndCameraPanelsDrawWithoutEditing) {
+    HeadlessImGui imgui;
+    for (const ViewTransform view : {ViewTransform::Auto, ViewTransform::Srgb}) {
+        Scene scene = editScene();
+        scene.settings.integrator = IntegratorKind::Path;
+        scene.settings.viewTransform = view;
+        scene.settings.environmentRotation = 270.0f;  // beyond the slider's turn: shown, kept
+        const std::string before = formatScene(scene, scene.path);
+        PanelState state;
+        Gestures gestures;
+        for (int f = 0; f < 2; ++f) {
+            imgui.frame(ImVec2(-1, -1), false, [&] {
+                const ImGuiID probe = ImGui::GetID("probe");
+                PanelActions actions;
+                startGestures(gestures);
+                EXPECT_EQ(drawSceneSettingsPanel(scene, state, gestures), kDirtyNone);
+                EXPECT_EQ(drawCameraPanel(scene.camera, state, gestures, actions), kDirtyNone);
+                EXPECT_EQ(ImGui::GetID("probe"), probe);
+                EXPECT_TRUE(actions.commands.empty());
+            });
+        }
+        EXPECT_EQ(formatScene(scene, scene.path), before);
+        EXPECT_TRUE(state.environmentStatus.empty());
+    }
 }
 
 TEST(ObjectsPanel, AClickOnSphereAddsOneAtTheViewCentre) {

@@ -7,21 +7,53 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "model/environment_edit.h"
+#include "model/setting_effects.h"
 #include "scene/block_table.h"
 #include "view/convergence_plot.h"
 #include "view/param_editor.h"
 
 namespace trazo {
 
-DirtyFlags drawSceneSettingsPanel(SceneSettings& s, Gestures& gestures) {
-    return editRows(sceneSettingsTable(), s, kDirtyScene, &gestures);
+namespace {
+
+// EnvironmentMap: the path as the scene file writes it, read when the field is left after an edit (Enter
+// leaves it too); a path that does not read leaves the old map and says why under the field.
+DirtyFlags drawEnvironmentMapField(Scene& scene, PanelState& state) {
+    if (!state.environmentEditing)
+        std::snprintf(state.environmentPath, sizeof state.environmentPath, "%s", environmentMapText(scene).c_str());
+    ImGui::InputTextWithHint("EnvironmentMap", "none: an equirectangular image", state.environmentPath,
+                             sizeof state.environmentPath);
+    const bool left = ImGui::IsItemDeactivatedAfterEdit();
+    state.environmentEditing = ImGui::IsItemActive();
+    DirtyFlags dirty = kDirtyNone;
+    if (left && setEnvironmentMap(scene, state.environmentPath, state.environmentStatus)) dirty = kDirtyScene;
+    if (!state.environmentStatus.empty()) {
+        if (left) std::fprintf(stderr, "trazo: %s\n", state.environmentStatus.c_str());
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", state.environmentStatus.c_str());
+        ImGui::PopStyleColor();
+    }
+    return dirty;
 }
 
-DirtyFlags drawCameraPanel(Camera& camera, Gestures& gestures, PanelActions& actions) {
-    const DirtyFlags dirty = editRows(cameraTable(), camera, kDirtyCamera, &gestures);
+}  // namespace
+
+DirtyFlags drawSceneSettingsPanel(Scene& scene, PanelState& state, Gestures& gestures) {
+    DirtyFlags dirty = editRows(sceneSettingsTable(), scene.settings, sceneSettingEffect, &gestures);
+    dirty |= drawEnvironmentMapField(scene, state);
+    return dirty;
+}
+
+DirtyFlags drawCameraPanel(Camera& camera, PanelState& state, Gestures& gestures, PanelActions& actions) {
+    const DirtyFlags dirty = editRows(cameraTable(), camera, cameraSettingEffect, &gestures);
     if (ImGui::Button("Frame scene (F)")) actions.commands.push_back(ViewerCommand::FrameScene);
     ImGui::SameLine();
     if (ImGui::Button("File camera (R)")) actions.commands.push_back(ViewerCommand::ResetCamera);
+    ImGui::SameLine();
+    if (ImGui::Button(state.focusPick ? "Click the image..." : "Focus here (Shift+F)"))
+        actions.commands.push_back(ViewerCommand::FocusPick);
+    if (state.focusPick) ImGui::TextDisabled("Click a surface: it becomes the FocalDistance · Escape cancels");
     ImGui::TextDisabled("Left drag orbit · middle/shift drag pan · wheel dolly · WASD/QE fly");
     return dirty;
 }
@@ -89,8 +121,7 @@ void drawRenderPanel(PanelState& state, const RenderInfo& info, PanelActions& ac
     if (ImGui::Button("Restart")) actions.restart = true;
     ImGui::SameLine();
     if (ImGui::Checkbox("Render at window size", &state.sizeFollowsWindow)) actions.dirty |= kDirtySize;
-    ImGui::SliderFloat("Exposure", &state.tone.exposureStops, -8.0f, 8.0f, "%+.1f stops");
-    ImGui::Combo("Tone", &state.tone.mode, "clamp (seed, = PNG)\0sRGB\0filmic\0");
+    ImGui::TextDisabled("Exposure and ViewTransform: Scene settings (shown as a PNG stores them)");
     for (const std::string& u : info.unsupported) ImGui::TextWrapped("%s", u.c_str());
 }
 
@@ -109,7 +140,7 @@ void drawExportPanel(PanelState& state, PanelActions& actions) {
             std::snprintf(state.screenshotPath, sizeof state.screenshotPath, "%s%s", path.c_str(), extension);
         }
     }
-    ImGui::TextDisabled(".png/.bmp/.tga: the seed's clamp · .exr/.hdr/.pfm: linear float");
+    ImGui::TextDisabled(".png/.bmp/.tga: as shown · .exr/.hdr/.pfm: linear float");
     ImGui::InputText("Scene", state.scenePath, sizeof state.scenePath);
     if (ImGui::Button("Save scene (Ctrl+S)")) actions.saveScene = true;
     if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
@@ -166,6 +197,7 @@ float drawMenuBar(const MenuInfo& info, PanelActions& actions) {
         ImGui::Separator();
         item("Frame scene", "F", ViewerCommand::FrameScene);
         item("File camera", "R", ViewerCommand::ResetCamera);
+        item("Focus on a click", "Shift+F", ViewerCommand::FocusPick);
         ImGui::EndMenu();
     }
     const float height = ImGui::GetWindowSize().y;
@@ -207,9 +239,9 @@ void drawSidePanelSections(Scene& scene, PanelState& state, const RenderInfo& in
         actions.label = label;
     };
     if (ImGui::CollapsingHeader("Scene settings"))
-        edited(drawSceneSettingsPanel(scene.settings, objects.gestures), "Edit scene settings");
+        edited(drawSceneSettingsPanel(scene, state, objects.gestures), "Edit scene settings");
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
-        edited(drawCameraPanel(scene.camera, objects.gestures, actions), "Edit camera");
+        edited(drawCameraPanel(scene.camera, state, objects.gestures, actions), "Edit camera");
     if (ImGui::CollapsingHeader("Materials")) {
         const DirtyFlags dirty = drawMaterialsPanel(scene, state, objects.gestures);
         if (dirty) edited(dirty, "Edit material " + scene.materials[size_t(state.material)].name);

@@ -61,8 +61,11 @@ void drawSidePanelSections(Scene& scene, PanelState& state, const RenderInfo& in
                            Vec3 viewCentre, PanelActions& actions);
 void endSidePanel();
 
-DirtyFlags drawSceneSettingsPanel(SceneSettings& settings, Gestures& gestures);
-DirtyFlags drawCameraPanel(Camera& camera, Gestures& gestures, PanelActions& actions);
+// Scene settings: the table's rows (Exposure and ViewTransform flagged kDirtyDisplay) and the EnvironmentMap
+// path field (PanelState's environment fields).
+DirtyFlags drawSceneSettingsPanel(Scene& scene, PanelState& state, Gestures& gestures);
+// Camera: the table's rows (the lens re-flattens), and the buttons: frame, file camera, focus on a click.
+DirtyFlags drawCameraPanel(Camera& camera, PanelState& state, Gestures& gestures, PanelActions& actions);
 DirtyFlags drawMaterialsPanel(Scene& scene, PanelState& state, Gestures& gestures);
 void drawRenderPanel(PanelState& state, const RenderInfo& info, PanelActions& actions);
 void drawExportPanel(PanelState& state, PanelActions& actions);

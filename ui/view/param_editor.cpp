@@ -72,6 +72,18 @@ bool drawParamWidget(const ParamInfo& info, const ParamWidget& w, ParamValue& v)
             n[0] = choices[choice];
             break;
         }
+        case Kind::Turn:  // a turn on the slider; Ctrl+click types any angle (the reader bounds none)
+            edited = ImGui::SliderFloat(label.c_str(), f, -kTurnDegrees, kTurnDegrees, w.format);
+            break;
+        case Kind::Words: {
+            std::vector<std::string> words(info.choices.begin(), info.choices.end());
+            int32_t index = -1;
+            for (size_t i = 0; i < words.size(); ++i)
+                if (words[i] == v.text) index = int32_t(i);
+            if (!comboIndex(label.c_str(), index, words, w.defaultLabel)) return false;
+            v.text = index >= 0 ? words[size_t(index)] : std::string();
+            return true;
+        }
     }
     if (!edited) return false;
     for (int i = 0; i < info.count; ++i)

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "model/dirty_flags.h"
@@ -29,23 +30,40 @@ bool drawParamWidget(const ParamInfo& info, const ParamWidget& w, ParamValue& v)
 // A combo over names, with `noneLabel` as index −1 first when given; true when the choice changed.
 bool comboIndex(const char* label, int32_t& index, const std::vector<std::string>& names, const char* noneLabel);
 
-// A widget for every number row of `table` (names, paths and transforms have none), kept inside the reader's
-// checks (fitToCheck); each change applied through the row and flagged as `flag` (a render size as size).
-template <class Target>
-DirtyFlags editRows(std::span<const ParamSpec<Target>> table, Target& target, DirtyFlags flag,
+// A widget for every number row of `table` and every row with a word list (other names, paths and transforms
+// have none), kept inside the reader's checks (fitToCheck); each change applied through the row (a word list's
+// unwritten default through resetToUnwrittenDefault) and flagged as `effect`: DirtyFlags for every row, or a
+// function of the row's ParamInfo (model/setting_effects.h); a render size as size.
+template <class Target, class Effect>
+DirtyFlags editRows(std::span<const ParamSpec<Target>> table, Target& target, Effect effect,
                     Gestures* gestures = nullptr) {
     DirtyFlags dirty = kDirtyNone;
     for (const ParamSpec<Target>& row : table) {
         const ParamWidget w = widgetFor(row.info);
+        if (w.kind == ParamWidget::Kind::None) continue;
         std::vector<ParamValue> values;
         row.extract(target, values);
-        if (w.kind == ParamWidget::Kind::None || values.size() != 1) continue;
-        ParamValue v = values[0];
-        const bool edited = drawParamWidget(row.info, w, v) && fitToCheck(row.info, v) && v.numbers != values[0].numbers;
+        // No value: a word list's default that is written as nothing (ViewTransform's auto).
+        const bool unwritten = values.empty() && w.kind == ParamWidget::Kind::Words && w.defaultLabel;
+        if (values.size() != 1 && !unwritten) continue;
+        const ParamValue old = unwritten ? ParamValue{} : values[0];
+        ParamValue v = old;
+        const bool edited = drawParamWidget(row.info, w, v) && fitToCheck(row.info, v) &&
+                            (v.numbers != old.numbers || v.text != old.text);
         if (gestures) trackGesture(*gestures, edited);
         if (!edited) continue;
-        row.apply(target, v);
-        dirty |= w.commitOnExit ? kDirtySize : flag;
+        if (w.kind == ParamWidget::Kind::Words && v.text.empty()) {
+            if (!resetToUnwrittenDefault(target, row.info)) continue;
+        } else {
+            row.apply(target, v);
+        }
+        if (w.commitOnExit) {
+            dirty |= kDirtySize;
+        } else if constexpr (std::is_invocable_r_v<DirtyFlags, Effect, const ParamInfo&>) {
+            dirty |= effect(row.info);
+        } else {
+            dirty |= DirtyFlags(effect);
+        }
     }
     return dirty;
 }

@@ -14,6 +14,7 @@ enum class ViewerCommand {
     Duplicate,  // then a move of the copy, as G
     AddSphere,  // at the point the camera looks at
     OpenPrompt, // the Open panel's path field takes the keys
+    FocusPick,  // Shift+F: the next click on the image sets the camera's FocalDistance (again: cancels)
 };
 
 }  // namespace trazo

@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "render/progressive_render.h"
+#include "model/setting_effects.h"
 #include "render/render_start.h"
 #include "view/render_info.h"
 
@@ -109,7 +110,7 @@ void ViewerApp::drawFrame(Display& display) {
     int fbw, fbh;
     window_.framebufferSize(fbw, fbh);
     updateArea();
-    display.draw(fbw, fbh, area_, imageRect(), state_.tone);
+    display.draw(fbw, fbh, area_, imageRect(), displayTransformOf(session_.scene()));
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     window_.swapBuffers();
 }

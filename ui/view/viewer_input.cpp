@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "render/render_start.h"
@@ -30,8 +31,16 @@ bool ViewerApp::applyInput(double dt) {
     if (e.zoom != 0)
         view_.zoomBy(std::pow(kZoomStep, e.zoom), e.zoomAt.x * framebufferScale_, e.zoomAt.y * framebufferScale_,
                      area_, session_.renderWidth(), session_.renderHeight());
-    for (const CursorPoint& c : e.clicks)
-        if (auto p = onImage(c)) editor_.click(*p);
+    for (const CursorPoint& c : e.clicks) {
+        const std::optional<ImagePoint> p = onImage(c);
+        if (!p) continue;
+        if (state_.focusPick) {  // "Focus here": this click sets the focus (the background: nothing) and ends it
+            state_.focusPick = false;
+            markEdited(editor_.focusAt(*p));
+        } else {
+            editor_.click(*p);
+        }
+    }
     if (e.moveStarted) {  // Alt+drag takes the object under the cursor, then moves it
         if (auto p = onImage(e.moveStart)) editor_.click(*p);
         editor_.beginMove(toImage(e.moveStart));
@@ -100,7 +109,12 @@ DirtyFlags ViewerApp::execute(ViewerCommand command) {
             break;
         case ViewerCommand::Grab: editor_.beginMove(toImage(window_.cursor())); break;
         case ViewerCommand::Confirm: return editor_.confirmMove() & ~kDirtyScene;  // the moves marked it
+        case ViewerCommand::FocusPick: state_.focusPick = !state_.focusPick; break;
         case ViewerCommand::Cancel:
+            if (state_.focusPick) {
+                state_.focusPick = false;
+                break;
+            }
             if (editor_.moving()) return editor_.cancelMove();
             editor_.clearSelection();
             break;
@@ -137,6 +151,8 @@ void ViewerApp::apply(const PanelActions& a) {
 }
 
 void ViewerApp::markEdited(DirtyFlags dirty) {
+    if (dirty & kDirtyDisplay) settleFrames_ = std::max(settleFrames_, 1);  // only redrawn: no restart, no preview
+    dirty &= ~kDirtyDisplay;
     if (!dirty) return;
     lastEdit_ = Clock::now();
     session_.markDirty(dirty);

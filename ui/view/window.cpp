@@ -44,6 +44,10 @@ bool commandForKey(int key, int mods, ViewerCommand& command) {
         command = ViewerCommand::AddSphere;
         return true;
     }
+    if (shift && key == GLFW_KEY_F) {
+        command = ViewerCommand::FocusPick;
+        return true;
+    }
     switch (key) {
         case GLFW_KEY_F: command = ViewerCommand::FrameScene; return true;
         case GLFW_KEY_R: command = ViewerCommand::ResetCamera; return true;
