@@ -52,7 +52,7 @@ namespace {
 const char* const kShippedScenes[] = {
     "effect_depth_of_field.scene",   "effect_dispersion.scene",      "effect_fresnel.scene",
     "effect_gallery.scene",          "effect_rough_glass.scene",     "effect_subsurface.scene",
-    "extra1_refract_indirect.scene", "scene10_bunny_indirect.scene", "scene10_bunny_indirect_area.scene",
+    "extra1_refract_indirect.scene", "path_gallery.scene",           "scene10_bunny_indirect.scene", "scene10_bunny_indirect_area.scene",
     "scene1_area.scene",             "scene1_point.scene",           "scene2_bunny.scene",
     "scene2_bunny_point.scene",      "scene3_csg.scene",             "scene3_csg_area.scene",
     "scene4_reflect.scene",          "scene5_bunny_reflect.scene",   "scene6_glossy.scene",

@@ -3,7 +3,7 @@
 
 #include "io/text_file.h"
 #include "scene/block_table.h"
-#include "scene/texture_reader.h"
+#include "scene/environment_reader.h"
 
 namespace trazo {
 namespace {
@@ -12,11 +12,6 @@ std::string trimmed(const std::string& s) {
     const size_t first = s.find_first_not_of(" \t\r\n");
     if (first == std::string::npos) return {};
     return s.substr(first, s.find_last_not_of(" \t\r\n") - first + 1);
-}
-
-// The one place the viewer reads an environment image (the reader's own call, scene_reader.cpp).
-std::shared_ptr<const TextureImage> readEnvironmentImage(const std::string& path, Diagnostics& diags) {
-    return readTextureImage(path, SourceLocation{}, diags);
 }
 
 }  // namespace
@@ -45,7 +40,7 @@ bool setEnvironmentMap(Scene& scene, const std::string& written, std::string& me
     std::shared_ptr<const TextureImage> image;
     if (!path.empty()) {
         Diagnostics diags;
-        image = readEnvironmentImage(path, diags);
+        image = readEnvironmentMap(path, SourceLocation{}, diags);  // as the reader does (scene_reader.cpp)
         if (!image || diags.hasErrors()) {
             message.clear();
             for (const Diagnostic& d : diags.items) {

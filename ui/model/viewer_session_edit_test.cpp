@@ -188,7 +188,9 @@ TEST(ViewerSessionUpload, EachKindOfEditResendsExactlyItsArrays) {
          "meshNodes triangles topNodes"},  // a translation leaves normals, tangents and uvs (the corners) as they were
         {"point light", kDirtyScene, [](Scene& s) { s.pointLights[0].position.x = 1.0f; }, "pointLights"},
         {"area light", kDirtyScene, [](Scene& s) { s.areaLights[0].width = 2.0f; }, "areaLights"},
-        {"setting", kDirtyScene, [](Scene& s) { s.settings.backgroundColor = Vec3(0.1f); }, "values"},
+        // BackgroundColor is the environment's radiance too (SPEC §7): its array goes with the settings.
+        {"setting", kDirtyScene, [](Scene& s) { s.settings.backgroundColor = Vec3(0.1f); }, "environment values"},
+        {"exposure", kDirtyScene, [](Scene& s) { s.settings.exposure = 1.0f; }, "none"},
         // A top level one object larger or smaller: its depth, and so traversalStackNeed (a value), changes too.
         {"sphere added", kDirtyScene, [](Scene& s) { s.spheres.push_back(Sphere{kDefaultMaterial, Vec3(-1, 2, 0), 0.3f, {}}); },
          "spheres objects topNodes values"},

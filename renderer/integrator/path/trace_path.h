@@ -22,10 +22,12 @@ struct PathState {
     float bsdfPdf = 0.0f; // the density of the last scattering's direction (for MIS at the light it finds)
     bool delta = true;    // the last direction could not have been found by a light sample (camera, mirror, walk)
     int channel = -1;     // the one colour channel a dispersing path carries (SPEC §6), −1 none yet
+    bool lightSampled = false;  // the light the next ray finds was sampled at every point it could come from
 };
 
 // The weight of light found by a scattered ray whose light sample density would have been lightPdf.
 TRAZO_HD float foundLightWeight(const RenderSettings& s, const PathState& path, float lightPdf) {
+    if (path.lightSampled) return 0.0f;
     if (path.delta || s.lightSampling == LightSampling::Bsdf) return 1.0f;
     if (s.lightSampling == LightSampling::Nee) return 0.0f;
     return powerHeuristic(path.bsdfPdf, lightPdf);
@@ -78,14 +80,53 @@ TRAZO_HD Bsdf pathBsdf(const MaterialData& m, const ShadingPoint& sp, bool enter
     return b;
 }
 
+// Light reaching a scattering point `at` inside `object` (an index-matched medium of mean free paths d): one
+// light sample, through the medium to its surface (each channel's transmittance e^(−t/d_c)) and on to the light,
+// with the isotropic phase function 1/4π. The walk's own exits then find no light that this samples.
+TRAZO_HD Vec3 lightInsideMedium(const SceneView& scene, uint32_t object, Vec3 at, Vec3 d, bool pointOnly,
+                                const StrataKey& strata, SampleStream& rng, uint32_t& rays) {
+    const uint32_t count = pointOnly ? scene.pointLights.count : sampledLightCount(scene);
+    const float u = rng.next(), u1 = rng.next(), u2 = rng.next();
+    if (count == 0) return Vec3(0.0f);
+    const uint32_t index = minOf(uint32_t(u * float(count)), count - 1);
+    uint32_t areaLight;
+    const LightSample ls = sampleLightAt(scene, index, at, strata, u1, u2, areaLight);
+    if (!(ls.pdf > 0.0f) || maxComponent(ls.radiance) <= 0.0f) return Vec3(0.0f);
+    const Ray toLight{at, ls.wi};
+    SurfaceHit surface;
+    ShapeHit shape;
+    ++rays;
+    if (!intersectObject(scene, scene.objects[object], toLight, ls.distance, shape)) return Vec3(0.0f);
+    surface = SurfaceHit{shape.t, shape.normal, object, 0, shape.triangle, shape.b1, shape.b2};
+    MaterialData m;
+    const ShadingPoint exit = shadingPointAt(scene, toLight, surface, m);
+    const Ray shadow{exit.rayOrigin(ls.wi), ls.wi};
+    ++rays;
+    if (pathOccluded(scene, shadow, (ls.distance - shape.t) * (1.0f - 1e-4f), areaLight)) return Vec3(0.0f);
+    const Vec3 transmittance = freePathDensity(d, shape.t, false);
+    return transmittance * ls.radiance * (float(count) / (4.0f * kPi * ls.pdf));
+}
+
 // The path after a subsurface walk from sp (SPEC §7): the ray leaving where the walk first crosses the object's
-// surface, along its last segment; false where the walk ends inside (absorbed by the model's bound).
+// surface, along its last segment; false where the walk ends inside (absorbed by the model's bound). Each
+// scattering inside samples a light (lightInsideMedium): under LightSampling mis and nee, the light an exit
+// after a scattering finds is then already counted (the walk's own direction is the medium's BSDF sample).
 TRAZO_HD bool leaveAfterWalk(const SceneView& scene, const SurfaceHit& hit, const ShadingPoint& sp,
-                             const MaterialData& m, PathState& path, SampleStream& rng, uint32_t& rays, Ray& ray) {
+                             const MaterialData& m, const StrataKey& strata, PathState& path, SampleStream& rng,
+                             uint32_t& rays, Ray& ray) {
     const ObjectRef& object = scene.objects[hit.object];
+    const bool pointOnly = scene.settings.lightSampling == LightSampling::Bsdf;
+    bool scattered = false;
+    Vec3 inside(0.0f);
+    auto atScattering = [&](Vec3 at, Vec3 weight) {
+        scattered = true;
+        inside += weight * lightInsideMedium(scene, hit.object, at, m.scatteringDistance, pointOnly, strata, rng, rays);
+    };
     Ray last;
     Vec3 weight;
-    if (!subsurfaceWalk(scene, object, sp, m, rng, rays, last, weight)) return false;
+    const bool left = subsurfaceWalk(scene, object, sp, m, rng, rays, last, weight, atScattering);
+    path.radiance += path.beta * inside;  // light sampled at scatterings counts even if the walk is later cut
+    if (!left) return false;
     SurfaceHit exit;
     ++rays;
     if (!intersectScene(scene, last, INFINITY, exit) || exit.object != hit.object) return false;
@@ -93,6 +134,7 @@ TRAZO_HD bool leaveAfterWalk(const SceneView& scene, const SurfaceHit& hit, cons
     const ShadingPoint out = shadingPointAt(scene, last, exit, me);
     path.beta *= weight;
     path.delta = true;
+    path.lightSampled = scattered && !pointOnly;
     ray = Ray{out.rayOrigin(last.direction), last.direction};
     return true;
 }
@@ -126,10 +168,10 @@ TRAZO_HD Vec3 tracePath(const SceneView& scene, Ray ray, const StrataKey& pixelS
 
         const bool entering = dot(ray.direction, hit.normal) < 0.0f;
         const Bsdf bsdf = pathBsdf(m, sp, entering, path, rng);
+        const StrataKey vertexStrata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass,
+                                     kSampleTreeRoot + scatterings};
         if (hasSmoothLobe(bsdf)) {  // point lights are sampled whatever LightSampling says: no ray finds them
             const bool pointOnly = s.lightSampling == LightSampling::Bsdf;
-            const StrataKey vertexStrata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass,
-                                         kSampleTreeRoot + scatterings};
             path.radiance += path.beta * sampleOneLight(scene, sp, bsdf, pointOnly, vertexStrata, rng, rays);
         }
 
@@ -138,10 +180,11 @@ TRAZO_HD Vec3 tracePath(const SceneView& scene, Ray ray, const StrataKey& pixelS
         if (!bsdf.sample(sp.v, uLobe, u1, u2, bs)) break;
         path.beta *= bs.weight;
         if (bs.subsurface) {
-            if (!leaveAfterWalk(scene, hit, sp, m, path, rng, rays, ray)) break;
+            if (!leaveAfterWalk(scene, hit, sp, m, vertexStrata, path, rng, rays, ray)) break;
         } else {
             path.bsdfPdf = bs.pdf;
             path.delta = bs.delta;
+            path.lightSampled = false;
             ray = Ray{sp.rayOrigin(bs.wi), bs.wi};
         }
         if (scatterings + 1 >= kRouletteStart) {
