@@ -1,0 +1,141 @@
+#!/usr/bin/env python3
+"""Small PFM probes for the Cornell comparison (python3, no modules beyond the standard library).
+
+  pfm_tool.py stats IMAGE.pfm [--exclude-above T]
+      "pixels N excluded K mean r g b max r g b" over pixels whose every channel is <= T (default: all)
+  pfm_tool.py pixel IMAGE.pfm X Y
+      "r g b" of pixel (X, Y), (0, 0) = top-left
+  pfm_tool.py average OUT.pfm A.pfm B.pfm [...] [--weights wa wb ...]
+      the (weighted) mean of images of one size, e.g. a reference from several seeds
+  pfm_tool.py png OUT.png A.pfm [B.pfm ...] [--scale S] [--gap G]
+      the images side by side (G black pixels between them), each pixel scaled S times (nearest), through
+      SPEC §7's `srgb` view: round(255 * sRGB(clamp(x, 0, 1))), Exposure 0
+"""
+import array
+import struct
+import sys
+import zlib
+
+
+def read_pfm(path):
+    with open(path, "rb") as f:
+        data = f.read()
+    parts, pos = [], 0
+    while len(parts) < 4:  # "PF", width, height, scale, separated by whitespace
+        while data[pos:pos + 1].isspace():
+            pos += 1
+        end = pos
+        while not data[end:end + 1].isspace():
+            end += 1
+        parts.append(data[pos:end].decode())
+        pos = end
+    pos += 1
+    kind, w, h, scale = parts[0], int(parts[1]), int(parts[2]), float(parts[3])
+    channels = 3 if kind == "PF" else 1
+    px = array.array("f")
+    px.frombytes(data[pos:pos + 4 * w * h * channels])
+    if (scale < 0) != (sys.byteorder == "little"):
+        px.byteswap()
+    if channels == 1:
+        px = array.array("f", [v for v in px for _ in range(3)])
+    return w, h, px  # bottom row first, RGB
+
+
+def write_pfm(path, w, h, px):
+    out = array.array("f", px)
+    if sys.byteorder != "little":
+        out.byteswap()
+    with open(path, "wb") as f:
+        f.write(b"PF\n%d %d\n-1.0\n" % (w, h))
+        f.write(out.tobytes())
+
+
+def srgb8(x):
+    x = 0.0 if not x > 0.0 else (1.0 if x > 1.0 else x)  # NaN -> 0
+    y = 12.92 * x if x < 0.0031308 else 1.055 * x ** (1 / 2.4) - 0.055
+    return int(255.0 * y + 0.5)
+
+
+def write_png(path, w, h, rows):  # rows: top row first, each bytes of RGB8
+    raw = b"".join(b"\x00" + r for r in rows)
+
+    def chunk(tag, body):
+        return struct.pack(">I", len(body)) + tag + body + struct.pack(">I", zlib.crc32(tag + body) & 0xFFFFFFFF)
+
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0)) +
+                chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+def option(args, name, default, count=1):
+    if name not in args:
+        return default
+    i = args.index(name)
+    values = args[i + 1:i + 1 + count] if count > 0 else args[i + 1:]
+    del args[i:i + 1 + len(values)]
+    return values[0] if count == 1 else values
+
+
+def main(argv):
+    if len(argv) < 2:
+        sys.exit(__doc__)
+    cmd, args = argv[1], argv[2:]
+    if cmd == "stats":
+        above = float(option(args, "--exclude-above", "inf"))
+        w, h, px = read_pfm(args[0])
+        s, m, n = [0.0] * 3, [float("-inf")] * 3, 0
+        for i in range(w * h):
+            p = px[3 * i:3 * i + 3]
+            if max(p) > above:
+                continue
+            n += 1
+            for c in range(3):
+                s[c] += p[c]
+                m[c] = max(m[c], p[c])
+        n1 = max(n, 1)
+        print("pixels %d excluded %d mean %.6g %.6g %.6g max %.6g %.6g %.6g" %
+              (n, w * h - n, s[0] / n1, s[1] / n1, s[2] / n1, *m))
+    elif cmd == "pixel":
+        w, h, px = read_pfm(args[0])
+        x, y = int(args[1]), int(args[2])
+        i = 3 * ((h - 1 - y) * w + x)
+        print("%.6g %.6g %.6g" % tuple(px[i:i + 3]))
+    elif cmd == "average":
+        out, inputs = args[0], args[1:]
+        weights = option(inputs, "--weights", None, count=0)
+        weights = [float(v) for v in weights] if weights else [1.0] * len(inputs)
+        total = sum(weights)
+        acc, size = None, None
+        for path, wgt in zip(inputs, weights):
+            w, h, px = read_pfm(path)
+            if size and size != (w, h):
+                sys.exit("pfm_tool: sizes differ")
+            size = (w, h)
+            acc = [wgt * v for v in px] if acc is None else [a + wgt * v for a, v in zip(acc, px)]
+        write_pfm(out, size[0], size[1], [a / total for a in acc])
+    elif cmd == "png":
+        scale = int(option(args, "--scale", "1"))
+        gap = int(option(args, "--gap", "4"))
+        out, images = args[0], [read_pfm(p) for p in args[1:]]
+        h = images[0][1]
+        if any(img[1] != h for img in images):
+            sys.exit("pfm_tool: heights differ")
+        lut_rows = []
+        for y in range(h - 1, -1, -1):  # top row first
+            row = bytearray()
+            for k, (w, _, px) in enumerate(images):
+                if k:
+                    row += b"\x00\x00\x00" * gap
+                base = 3 * y * w
+                for x in range(w):
+                    rgb = bytes(srgb8(px[base + 3 * x + c]) for c in range(3))
+                    row += rgb * scale
+            lut_rows.extend([bytes(row)] * scale)
+        width = len(lut_rows[0]) // 3
+        write_png(out, width, len(lut_rows), lut_rows)
+    else:
+        sys.exit(__doc__)
+
+
+if __name__ == "__main__":
+    main(sys.argv)
