@@ -7,6 +7,9 @@
       "r g b" of pixel (X, Y), (0, 0) = top-left
   pfm_tool.py average OUT.pfm A.pfm B.pfm [...] [--weights wa wb ...]
       the (weighted) mean of images of one size, e.g. a reference from several seeds
+  pfm_tool.py lightmask OUT.pfm W H
+      1 where a pixel's square overlaps the Cornell box's light as the camera of scenes/cornell_box.scene sees
+      it (SPEC §3's camera: vertical FOV 39.3077, pixel (0, 0) top-left), else 0: image_error --relmse --mask
   pfm_tool.py png OUT.png A.pfm [B.pfm ...] [--scale S] [--gap G]
       the images side by side (G black pixels between them), each pixel scaled S times (nearest), through
       SPEC §7's `srgb` view: round(255 * sRGB(clamp(x, 0, 1))), Exposure 0
@@ -67,6 +70,38 @@ def write_png(path, w, h, rows):  # rows: top row first, each bytes of RGB8
                 chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
 
 
+CAMERA = (278.0, 273.0, -800.0)  # looking along +z, up +y: the image's right is -x
+TAN_HALF_FOV = 12.5 / 35.0  # tan(39.3077 deg / 2)
+LIGHT = [(343, 548.7, 227), (343, 548.7, 332), (213, 548.7, 332), (213, 548.7, 227)]
+
+
+def light_mask(w, h):
+    # The light's corners in pixel coordinates (x right, y down); a pinhole maps the rectangle to a convex quad.
+    quad = []
+    for X, Y, Z in LIGHT:
+        d = Z - CAMERA[2]
+        sx, sy = -(X - CAMERA[0]) / d / TAN_HALF_FOV, (Y - CAMERA[1]) / d / TAN_HALF_FOV  # vertical FOV: h spans 2
+        quad.append((w / 2 + sx * h / 2, h / 2 - sy * h / 2))
+
+    def overlaps(px, py):  # separating axes: the square's two axes and the quad's four edge normals
+        square = [(px, py), (px + 1, py), (px + 1, py + 1), (px, py + 1)]
+        axes = [(1, 0), (0, 1)] + [(quad[i][1] - quad[i - 1][1], quad[i - 1][0] - quad[i][0]) for i in range(4)]
+        for ax, ay in axes:
+            a = [ax * x + ay * y for x, y in square]
+            b = [ax * x + ay * y for x, y in quad]
+            if max(a) <= min(b) or max(b) <= min(a):
+                return False
+        return True
+
+    px = array.array("f", [0.0]) * (3 * w * h)
+    for y in range(h):  # y counted from the top; PFM rows from the bottom
+        for x in range(w):
+            if overlaps(x, y):
+                i = 3 * ((h - 1 - y) * w + x)
+                px[i] = px[i + 1] = px[i + 2] = 1.0
+    return px
+
+
 def option(args, name, default, count=1):
     if name not in args:
         return default
@@ -113,6 +148,11 @@ def main(argv):
             size = (w, h)
             acc = [wgt * v for v in px] if acc is None else [a + wgt * v for a, v in zip(acc, px)]
         write_pfm(out, size[0], size[1], [a / total for a in acc])
+    elif cmd == "lightmask":
+        w, h = int(args[1]), int(args[2])
+        mask = light_mask(w, h)
+        write_pfm(args[0], w, h, mask)
+        print("lightmask %d pixels" % (sum(mask) // 3))
     elif cmd == "png":
         scale = int(option(args, "--scale", "1"))
         gap = int(option(args, "--gap", "4"))
