@@ -8,7 +8,7 @@
 namespace trazo {
 
 // X(Kind, Struct, "keyword"): the enumerator, the struct in integrator/<keyword>/, and the scene files' word.
-#define TRAZO_INTEGRATORS(X) X(Thesis, ThesisIntegrator, "thesis")
+#define TRAZO_INTEGRATORS(X) X(Thesis, ThesisIntegrator, "thesis") X(Path, PathIntegrator, "path")
 
 enum class IntegratorKind : uint32_t {
 #define TRAZO_X(kind, type, keyword) kind,

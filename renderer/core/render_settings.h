@@ -8,6 +8,9 @@
 
 namespace trazo {
 
+// SPEC §7's LightSampling: how the path integrator estimates light (all three converge to the same image).
+enum class LightSampling : uint32_t { Mis, Nee, Bsdf };
+
 struct RenderSettings {
     Vec3 background;
     uint32_t reflectionQuality;
@@ -23,6 +26,9 @@ struct RenderSettings {
     float focalDistance;
     uint32_t lensQuality;
     IntegratorKind integrator = IntegratorKind::Thesis;
+    // SPEC §7 (Integrator path): scatterings a path may take beyond the first (MaxBounces), and the estimator.
+    uint32_t maxBounces = 64;
+    LightSampling lightSampling = LightSampling::Mis;
 };
 
 }  // namespace trazo

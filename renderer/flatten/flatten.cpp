@@ -154,7 +154,8 @@ FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
     const float focus = c.focalDistance > 0.0f ? c.focalDistance : length(c.poi - c.pov);  // 0: POI is in focus
     out.settings = RenderSettings{s.backgroundColor, (uint32_t)s.reflectionQuality, (uint32_t)s.reflectionSteps,
                                   (uint32_t)s.indirectQuality, s.colorBleeding, (uint32_t)s.antialiasing,
-                                  c.aperture, focus, (uint32_t)std::max(c.lensQuality, 1)};
+                                  c.aperture, focus, (uint32_t)std::max(c.lensQuality, 1), s.integrator,
+                                  (uint32_t)std::clamp(s.maxBounces, 0, kMaxBounces), s.lightSampling};
 
     FeatureMask f = 0;
 #define TRAZO_X(Data, array, Kind, keyword, label, feature) \

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/integrator_kinds.h"
+#include "integrator/path/path_integrator.h"
 #include "integrator/thesis/thesis_integrator.h"
 
 namespace trazo {

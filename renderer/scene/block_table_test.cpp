@@ -105,6 +105,19 @@ SpecBlocks specFutureWork(const std::string& text) {
     return specParams(text, kItem, &kRemark);
 }
 
+// §7 adds its settings in one paragraph: "**Settings** (SceneSettings): `Integrator` thesis|path [thesis]; …".
+SpecBlocks specPhysical(const std::string& text) {
+    static const std::regex kParagraph(R"(^\*\*[^*]+\*\* \((\w+)\): (.*)$)");
+    static const std::regex kRemark(R"( \([^()]*\))");
+    return specParams(text, kParagraph, &kRemark);
+}
+
+// A default SPEC states in words where the table has none: no value ("none"), or one that depends on another
+// setting ("linear under thesis, srgb under path").
+bool saysNoValue(const std::string& specDefault) {
+    return specDefault == "none" || specDefault.find(" under ") != std::string::npos;
+}
+
 // As the reader stores them: floats. The tables' default texts are scene.h's float initialisers written with
 // %.9g ("0.899999976"), SPEC's are decimal ("0.9"); both read to the same float.
 std::vector<float> numbers(const std::string& s) {
@@ -124,6 +137,12 @@ void expectTablesMatch(const std::string& specPath) {
         ASSERT_TRUE(blocks.count(block)) << "§6 adds to a block §3 does not have: " << block;
         blocks[block].insert(blocks[block].end(), params.begin(), params.end());
     }
+    const SpecBlocks physical = specPhysical(section(spec, "## 7.", "\n## 8."));
+    ASSERT_EQ(physical.size(), 1u) << "§7 adds its settings in one paragraph";
+    for (const auto& [block, params] : physical) {
+        ASSERT_TRUE(blocks.count(block)) << "§7 adds to a block §3 does not have: " << block;
+        blocks[block].insert(blocks[block].end(), params.begin(), params.end());
+    }
     for (const BlockInfo& table : sceneBlocks()) {
         const std::string block(table.name);
         const auto it = blocks.find(block);
@@ -137,7 +156,11 @@ void expectTablesMatch(const std::string& specPath) {
                                             [&](const ParamInfo& q) { return q.name == p.name; });
             if (param == table.params.end()) continue;
             const std::string mine(param->defaultText);
-            if (p.defaultText == "—" || mine == "—" || p.defaultText.empty() || mine.empty()) {
+            if (saysNoValue(p.defaultText)) {
+                EXPECT_EQ(mine, "") << block << "." << p.name;
+            } else if (!param->choices.empty()) {
+                EXPECT_EQ(mine, p.defaultText) << block << "." << p.name;
+            } else if (p.defaultText == "—" || mine == "—" || p.defaultText.empty() || mine.empty()) {
                 EXPECT_EQ(mine, p.defaultText) << block << "." << p.name;
             } else {
                 EXPECT_EQ(numbers(mine), numbers(p.defaultText)) << block << "." << p.name;
@@ -231,7 +254,9 @@ template <class Target>
 ParamValue otherValue(const ParamSpec<Target>& row, const ParamValue& base) {
     for (double step : {3.25, -0.75}) {
         ParamValue v = base;
-        v.text = row.info.kind == ValueKind::Path ? "/tmp/trazo-rows/sub/file.png" : "someName";
+        v.text = row.info.kind == ValueKind::Path ? "/tmp/trazo-rows/sub/file.png"
+                 : row.info.choices.empty()       ? "someName"
+                                                  : std::string(row.info.choices.back());
         for (int i = 0; i < row.info.count; ++i) v.numbers[size_t(i)] += step;
         EXPECT_TRUE(fitToCheck(row.info, v)) << row.info.name;
         if (v.numbers != base.numbers || row.info.kind == ValueKind::Name || row.info.kind == ValueKind::Path) return v;

@@ -60,6 +60,9 @@ std::string rangeProblem(ValueCheck check, double x) {
         case C::Flag: return x != 0 && x != 1 ? " must be 0 or 1" : "";
         case C::Dispersion:
             return x < 0 || x > kMaxDispersion ? " must be between 0 and 20 (an Abbe number of at least 1)" : "";
+        case C::BounceCount: return x < 0 ? " must not be negative" : "";
+        case C::Stops:
+            return std::fabs(x) > kMaxStops ? " must be between -64 and 64 stops" : "";
         case C::Radius:
             if (!(x > 0)) return " must be positive";
             // As stored: "1e19" is kMaxRadius.
@@ -90,6 +93,12 @@ bool checkRange(const ParamInfo& info, const ParameterLine& line, size_t offset,
         if (check == C::Antialiasing && x != 1 && x != 4 && x != 16) {
             diags.warning(at(i), name + " must be 1, 4 or 16, got " + text(i) + "; using 1");
             v.numbers[size_t(i)] = 1;
+        }
+        if (check == C::BounceCount && x > kMaxBounces) {
+            diags.warning(at(i), name + " " + text(i) + " is more than " + std::to_string(kMaxBounces) +
+                                     "; using " + std::to_string(kMaxBounces) +
+                                     " (a path that nothing absorbs would run every bounce)");
+            v.numbers[size_t(i)] = kMaxBounces;
         }
         if (check == C::NonZeroComponents && x == 0)
             return diags.error(at(i), name + " component must not be zero (a singular transform)"), false;
@@ -172,6 +181,14 @@ int checkParameter(const Block& block, std::span<const ParamInfo* const> params,
                     diags.error(at, name + ": expected a name, got a quoted path");
                     return k;
                 }
+                if (!info.choices.empty() &&
+                    std::find(info.choices.begin(), info.choices.end(), bv.text) == info.choices.end()) {
+                    std::string words;
+                    for (std::string_view w : info.choices) words += (words.empty() ? "" : ", ") + std::string(w);
+                    diags.error(at, name + " must be one of " + words + ", got '" + bv.text + "'",
+                                didYouMean(bv.text, {info.choices.begin(), info.choices.end()}));
+                    return k;
+                }
                 value.text = bv.text;
                 break;
             case K::Path:
@@ -224,6 +241,8 @@ ValueRange editRange(const ParamInfo& info) {
         case C::ConeAngle: return {0, 180};
         case C::Flag: return {0, 1};
         case C::Dispersion: return {0, kMaxDispersion};
+        case C::BounceCount: return {0, kMaxBounces};
+        case C::Stops: return {-kMaxStops, kMaxStops};
         case C::StrataQuality: return {0, kMaxStrataQuality};
         case C::ReflectionDepth: return {0, double(kMaxReflectionSteps)};
         case C::GridCells: return {1, kMaxGridSide};

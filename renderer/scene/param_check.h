@@ -32,6 +32,8 @@ enum class ValueCheck {
     ConeAngle,          // 0 … 180 degrees (ReflectionAngle is the full cone angle)
     Flag,               // 0 or 1 (Fresnel)
     Dispersion,         // 0 … kMaxDispersion
+    BounceCount,        // MaxBounces: ≥ 0; above kMaxBounces a warning and kMaxBounces
+    Stops,              // Exposure: −kMaxStops … kMaxStops
     // Bounded where the render is sized (checkRenderBounds); read as NonNegative / Positive.
     StrataQuality,      // q: 0 … kMaxStrataQuality (2·q² strata)
     ReflectionDepth,    // 0 … kMaxReflectionSteps
@@ -55,6 +57,9 @@ constexpr float kMaxColour = 1e12f;
 // Within it every channel's index (SPEC §6) stays below twice RefractionIndex (blue's factor is 1 + 0.92·D/20).
 constexpr float kMaxDispersion = 20.0f;
 
+// Exposure: 2^64 times a pixel of at most kMaxColour-scale sums stays far inside float.
+constexpr float kMaxStops = 64.0f;
+
 // How the viewer shows a Real parameter (its widget); the reader treats them all as numbers.
 enum class ValueUnit { None, Color, Degrees, Radians };
 
@@ -67,6 +72,7 @@ struct ParamInfo {
     ValueCheck check = ValueCheck::None;
     bool accumulates = false;  // transforms: every line adds a step instead of the later one winning
     ValueUnit unit = ValueUnit::None;
+    std::span<const std::string_view> choices{};  // a Name that must be one of these words (Integrator)
     // The default as the scene writer would write it ("—" when required, "" when there is none). Made by the
     // tables from a default-constructed struct, so scene.h's initialisers are the only defaults.
     std::string defaultText{};

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "core/render_settings.h"
 #include "core/vec3.h"
+#include "core/view_transform.h"
 #include "objects/object_kind_list.h"
 #include "scene/diagnostic.h"
 #include "scene/kinds/light_kind_model.h"
@@ -32,10 +34,20 @@ constexpr int kMaxGridSide = 1024;      // the largest square grid: 1024 × 1024
 static_assert(2ull * kMaxStrataQuality * kMaxStrataQuality <= kMaxGridStrata &&
               2ull * (kMaxStrataQuality + 1) * (kMaxStrataQuality + 1) > kMaxGridStrata);
 static_assert(uint64_t(kMaxGridSide) * kMaxGridSide == kMaxGridStrata);
+// SPEC §7's MaxBounces: a path of albedo 1 (a mirror enclosure) is never ended by Russian roulette, so its cost
+// grows with the bound. 4096 bounces of any albedo below 0.998 have carried its light below e^-8.
+constexpr int kMaxBounces = 4096;
 // ReflectionSteps bounds the mirror chain below each camera ray, so a pass's cost grows with it. Beyond 2^16
 // bounces a mirror of any reflectance below 1 − 10⁻³ has attenuated the ray by e^−65 (and the PendingRay
 // bit field holds 2^27 − 1).
 constexpr uint64_t kMaxReflectionSteps = 1u << 16;
+
+// An image decoded by FreeImage into linear float RGB (texel values as stored, no sRGB decoding).
+struct TextureImage {
+    int width = 0;
+    int height = 0;
+    std::vector<Vec3> texels;  // row 0 = bottom row of the image (uv origin bottom-left)
+};
 
 struct SceneSettings {
     Vec3 backgroundColor{0, 0, 0};
@@ -46,9 +58,18 @@ struct SceneSettings {
     int indirectQuality = 3;    // q -> 2·q² hemisphere rays
     float colorBleeding = 1.0f;
     int antialiasing = 1;  // 1, 4 or 16
+    // SPEC §7: the integrator, its bounce limit and estimator, the environment and the image transform.
+    IntegratorKind integrator = IntegratorKind::Thesis;
+    int maxBounces = 64;
+    LightSampling lightSampling = LightSampling::Mis;
+    std::string environmentMap;  // resolved path; empty: none
+    std::shared_ptr<const TextureImage> environmentImage;
+    float environmentRotation = 0.0f;  // degrees about +Y
+    float exposure = 0.0f;             // stops
+    ViewTransform viewTransform = ViewTransform::Auto;
     // Where the SceneSettings block and the parameters bounded at render time (render/strata_plan.h
     // checkRenderBounds) were written; empty when not given (a default) or not recorded.
-    SourceLocation where, reflectionQualityAt, reflectionStepsAt, indirectQualityAt;
+    SourceLocation where, reflectionQualityAt, reflectionStepsAt, indirectQualityAt, environmentMapAt;
 };
 
 struct Camera {
@@ -61,13 +82,6 @@ struct Camera {
     float focalDistance = 0.0f;
     int lensQuality = 3;
     SourceLocation lensQualityAt;  // bounded at render time (checkRenderBounds)
-};
-
-// An image decoded by FreeImage into linear float RGB (texel values as stored, no sRGB decoding).
-struct TextureImage {
-    int width = 0;
-    int height = 0;
-    std::vector<Vec3> texels;  // row 0 = bottom row of the image (uv origin bottom-left)
 };
 
 struct Texture {

@@ -70,6 +70,10 @@ private:
             SceneSettings settings;  // like Camera, the last block wins as a whole
             readParameters(block, sceneSettingsTable(), settings, diags_);
             settings.where = block.where;
+            if (!settings.environmentMap.empty()) {
+                settings.environmentMap = resolveRelativePath(file_, settings.environmentMap);
+                settings.environmentImage = readTextureImage(settings.environmentMap, settings.environmentMapAt, diags_);
+            }
             scene_.settings = settings;
         } else if (id == "Camera") {
             readCamera(block);

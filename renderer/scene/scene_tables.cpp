@@ -146,6 +146,34 @@ std::vector<ParamSpec<ObjectDraft<Object>>> objectRows() {
         concat<ParamSpec<ObjectDraft<Object>>>({named, lift(&ObjectDraft<Object>::object, ownRows<Object>())}));
 }
 
+// A Name row whose value is one of `words`, stored as an enumerator: word i is Enum(first + i); a value below
+// `first` (a default that depends on other settings) is written as nothing.
+template <class Target, class Enum>
+ParamSpec<Target> choice(std::string_view name, Enum Target::*member, std::span<const std::string_view> words,
+                         std::string_view doc, uint32_t first = 0) {
+    const ParamInfo info{.name = name, .kind = ValueKind::Name, .doc = doc, .choices = words};
+    return {info,
+            [member, words, first](Target& t, const ParamValue& v) {
+                for (size_t i = 0; i < words.size(); ++i)
+                    if (words[i] == v.text) t.*member = Enum(first + uint32_t(i));
+            },
+            [member, words, first](const Target& t, std::vector<ParamValue>& out) {
+                const uint32_t value = uint32_t(t.*member);
+                if (value < first || value - first >= words.size()) return;
+                ParamValue v;
+                v.text = std::string(words[value - first]);
+                out.push_back(v);
+            }};
+}
+
+constexpr std::string_view kIntegratorWords[] = {
+#define TRAZO_X(kind, type, keyword) keyword,
+    TRAZO_INTEGRATORS(TRAZO_X)
+#undef TRAZO_X
+};
+constexpr std::string_view kLightSamplingWords[] = {"mis", "nee", "bsdf"};
+constexpr std::string_view kViewTransformWords[] = {"linear", "srgb"};  // after ViewTransform::Auto
+
 template <class Target>
 BlockInfo infoOf(std::string_view name, std::span<const ParamSpec<Target>> table) {
     BlockInfo b{name, {}};
@@ -186,6 +214,19 @@ std::span<const ParamSpec<SceneSettings>> sceneSettingsTable() {
               Check::StrataQuality, ValueUnit::None, &SceneSettings::indirectQualityAt),
         field("ColorBleeding", &SceneSettings::colorBleeding, "factor on the indirect light"),
         field("Antialiasing", &SceneSettings::antialiasing, "samples per pixel: 1, 4 or 16", Check::Antialiasing),
+        choice("Integrator", &SceneSettings::integrator, kIntegratorWords,
+               "thesis: the thesis's model (SPEC §5); path: light transport (SPEC §7)"),
+        field("MaxBounces", &SceneSettings::maxBounces, "path: scatterings after the first a path may take",
+              Check::BounceCount),
+        choice("LightSampling", &SceneSettings::lightSampling, kLightSamplingWords,
+               "path: light by mis (both, weighted), nee (light samples) or bsdf (scattered rays)"),
+        textRow<SceneSettings>({.name = "EnvironmentMap", .kind = ValueKind::Path, .doc = "equirectangular image of the sky's radiance"},
+                               [](auto& s) -> auto& { return s.environmentMap; }, &SceneSettings::environmentMapAt),
+        field("EnvironmentRotation", &SceneSettings::environmentRotation, "turn of the environment about +Y",
+              Check::None, ValueUnit::Degrees),
+        field("Exposure", &SceneSettings::exposure, "stops: the image is 2^Exposure × the pixel", Check::Stops),
+        choice("ViewTransform", &SceneSettings::viewTransform, kViewTransformWords,
+               "8-bit files and the viewer: linear or srgb", uint32_t(ViewTransform::Linear)),
     });
     return rows;
 }

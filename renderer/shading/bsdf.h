@@ -35,6 +35,7 @@ struct BsdfSample {
     float pdf;      // in solid angle; for a delta lobe, the probability of having picked it
     uint32_t lobe;  // the BsdfLobe drawn
     bool delta;     // no other direction could have given wi: no MIS weight
+    bool subsurface = false;  // the diffuse lobe of a scattering material: wi is not drawn, a walk follows
 };
 
 // The density of a direction at angle θ < halfAngle from the cone's axis with θ and φ uniform (SPEC §5's cones).
@@ -73,6 +74,9 @@ struct Bsdf {
     bool fresnel;
     float ior;           // the material's index, for Fresnel on reflection
     float pick[4];       // the probability of each lobe, in BsdfLobe order
+    // SPEC §7's subsurface scattering: the diffuse lobe is an index-matched medium below the surface, entered
+    // by a walk (integrator/subsurface.h) rather than a direction; `diffuse` is then the lobe's weight.
+    bool subsurface = false;
 
     TRAZO_HD Vec3 n() const { return frame.axis; }
 
@@ -85,7 +89,7 @@ struct Bsdf {
         Vec3 f(0.0f);
         const bool above = dot(wi, ng) > 0.0f && dot(wi, n()) > 0.0f;
         if (above) {
-            if (pick[0] > 0.0f) f += diffuse * (evalOrenNayar(n(), wi, wo, sigma) / kPi);
+            if (pick[0] > 0.0f && !subsurface) f += diffuse * (evalOrenNayar(n(), wi, wo, sigma) / kPi);
             if (pick[1] > 0.0f) {
                 const float fr = fresnel ? dielectricFresnel(dot(wo, normalize(wo + wi)), 1.0f, ior) : 1.0f;
                 f += glossy * (beckmannCos(n(), wo, wi, m) * fr);
@@ -104,7 +108,7 @@ struct Bsdf {
         float p = 0.0f;
         const bool above = dot(wi, ng) > 0.0f && dot(wi, n()) > 0.0f;
         if (above) {
-            if (pick[0] > 0.0f) p += pick[0] * dot(n(), wi) / kPi;
+            if (pick[0] > 0.0f && !subsurface) p += pick[0] * dot(n(), wi) / kPi;
             if (pick[1] > 0.0f) p += pick[1] * beckmannPdf(n(), wo, wi, m);
             if (pick[2] > 0.0f && reflectionHalfAngle > 0.0f)
                 p += pick[2] * conePdf(mirror(wo), reflectionHalfAngle, wi);
@@ -124,6 +128,15 @@ struct Bsdf {
         if (!(pick[lobe] > 0.0f)) return false;
         out.lobe = 1u << lobe;
         out.delta = false;
+        out.subsurface = false;
+        if (lobe == 0 && subsurface) {
+            out.subsurface = true;
+            out.delta = true;
+            out.pdf = pick[0];
+            out.weight = diffuse / pick[0];
+            out.wi = -n();
+            return true;
+        }
         if (lobe == 0) {
             out.wi = sampleCosineHemisphere(frame, u1, u2);
         } else if (lobe == 1) {

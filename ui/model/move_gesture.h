@@ -2,14 +2,14 @@
 // objectAnchor) follows the cursor in the plane facing the camera at the anchor's depth, the wheel moves it
 // nearer or farther along the cursor's ray, and the gesture ends confirmed (one undo step: the scene as it was
 // goes to the history) or cancelled (the scene as it was is put back). Host only: the cursor comes in image
-// pixels of the full render size (ViewTransform::imagePoint).
+// pixels of the full render size (ImagePlacement::imagePoint).
 #pragma once
 
 #include <cstdint>
 #include <optional>
 
 #include "core/vec3.h"
-#include "model/view_transform.h"
+#include "model/image_placement.h"
 #include "scene/object_id.h"
 #include "scene/scene.h"
 

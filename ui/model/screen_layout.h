@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "model/view_transform.h"
+#include "model/image_placement.h"
 
 namespace trazo {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "model/object_commands.h"
-#include "model/view_transform.h"
+#include "model/image_placement.h"
 #include "model/viewer_session.h"
 
 namespace trazo {

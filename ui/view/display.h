@@ -10,7 +10,7 @@
 
 #include "backends/backend.h"
 #include "model/panel_state.h"
-#include "model/view_transform.h"
+#include "model/image_placement.h"
 
 namespace trazo {
 
@@ -33,7 +33,7 @@ public:
     // image, row 0 = top; an empty mask shows none. Only the display sees it, never the accumulation.
     void setOutline(const std::vector<uint8_t>& mask, uint32_t width, uint32_t height);
     // Clears the framebuffer to the viewer's background (also the colour around the image), then draws the image
-    // into `rect` (framebuffer pixels from the top-left, ViewTransform::rect) clipped to `area`.
+    // into `rect` (framebuffer pixels from the top-left, ImagePlacement::rect) clipped to `area`.
     void draw(int framebufferWidth, int framebufferHeight, const ImageRect& area, const ImageRect& rect,
               const ToneSettings& tone) const;
 

@@ -2,7 +2,7 @@
 // → camera, view and object edits (each an undo step through SceneEditor, marked dirty on the session); when
 // the worker's batch of passes is done, show it (and the selection's outline), apply the edits (re-upload,
 // reset) and start the next batch sized to the frame budget; build the menu bar and the side panel, apply
-// their actions, draw the image in its area beside the panel (ViewTransform), present. The loop and the image
+// their actions, draw the image in its area beside the panel (ImagePlacement), present. The loop and the image
 // live in viewer_frame_loop.cpp, input and commands in viewer_input.cpp. Files and their questions are
 // SceneFiles', names and image saves ExportController's, the closing line's numbers ViewerStats'.
 #pragma once
@@ -17,7 +17,7 @@
 #include "model/export_controller.h"
 #include "model/scene_editor.h"
 #include "model/screen_layout.h"
-#include "model/view_transform.h"
+#include "model/image_placement.h"
 #include "model/viewer_session.h"
 #include "model/viewer_stats.h"
 #include "view/display.h"
@@ -97,7 +97,7 @@ private:
     uint64_t shownGeneration_ = ~uint64_t(0);
     int settleFrames_ = 0;
     Clock::time_point lastEdit_{};
-    ViewTransform view_;
+    ImagePlacement view_;
     ImageRect area_;
     float menuHeight_ = 0, framebufferScale_ = 1;
     std::vector<uint8_t> outline_;

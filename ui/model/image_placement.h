@@ -1,4 +1,4 @@
-// ViewTransform: where the image sits inside its area of the window: fitted (the whole image, as large as the
+// ImagePlacement: where the image sits inside its area of the window: fitted (the whole image, as large as the
 // area allows), or at a zoom with a pan (1:1 is zoom 1: one image pixel per framebuffer pixel). Pure math in
 // framebuffer pixels with the origin at the top-left (the display turns it into GL's bottom-left); the window's
 // clicks are mapped back to image pixels through it. No GL.
@@ -23,7 +23,7 @@ struct ImagePoint {
     float x = 0, y = 0;
 };
 
-class ViewTransform {
+class ImagePlacement {
 public:
     static constexpr float kMinZoom = 1.0f / 32.0f, kMaxZoom = 64.0f;
 

@@ -1,6 +1,6 @@
 // Tests of the image's placement in its area: the fit, 1:1 at whole pixels, zoom about the cursor (the image
 // point under it stays), pan, and framebuffer points mapped back to image pixels.
-#include "model/view_transform.h"
+#include "model/image_placement.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@ namespace {
 
 const ImageRect kArea{380, 20, 600, 400};  // right of a panel, below a menu bar
 
-TEST(ViewTransform, FitIsTheLargestCentredRectangleAtWholePixels) {
+TEST(ImagePlacement, FitIsTheLargestCentredRectangleAtWholePixels) {
     const ImageRect r = fitImage(kArea, 300, 100);  // wide: limited by the width, scale 2
     EXPECT_EQ(r.width, 600);
     EXPECT_EQ(r.height, 200);
@@ -24,8 +24,8 @@ TEST(ViewTransform, FitIsTheLargestCentredRectangleAtWholePixels) {
     EXPECT_EQ(fitImage({0, 0, 0, 10}, 10, 10).width, 0);
 }
 
-TEST(ViewTransform, ActualPixelsIsOneToOneAndCentred) {
-    ViewTransform v;
+TEST(ImagePlacement, ActualPixelsIsOneToOneAndCentred) {
+    ImagePlacement v;
     EXPECT_TRUE(v.fitted());
     EXPECT_FLOAT_EQ(v.scale(kArea, 300, 100), 2.0f);
     v.actualPixels();
@@ -40,8 +40,8 @@ TEST(ViewTransform, ActualPixelsIsOneToOneAndCentred) {
     EXPECT_EQ(v.rect(kArea, 301, 101).width, fitImage(kArea, 301, 101).width);
 }
 
-TEST(ViewTransform, ZoomKeepsThePointUnderTheCursor) {
-    ViewTransform v;
+TEST(ImagePlacement, ZoomKeepsThePointUnderTheCursor) {
+    ImagePlacement v;
     v.actualPixels();
     const float px = 700, py = 150;
     const ImagePoint before = *v.imagePoint(px, py, kArea, 200, 200);
@@ -51,11 +51,11 @@ TEST(ViewTransform, ZoomKeepsThePointUnderTheCursor) {
     EXPECT_NEAR(after.x, before.x, 0.5f);  // the rectangle's corner is rounded to whole pixels
     EXPECT_NEAR(after.y, before.y, 0.5f);
     v.zoomBy(1e6f, px, py, kArea, 200, 200);
-    EXPECT_EQ(v.scale(kArea, 200, 200), ViewTransform::kMaxZoom);
+    EXPECT_EQ(v.scale(kArea, 200, 200), ImagePlacement::kMaxZoom);
 }
 
-TEST(ViewTransform, ZoomFromTheFitStartsAtTheFitScale) {
-    ViewTransform v;
+TEST(ImagePlacement, ZoomFromTheFitStartsAtTheFitScale) {
+    ImagePlacement v;
     const ImageRect fit = v.rect(kArea, 300, 100);
     v.zoomBy(1.0f, 500, 200, kArea, 300, 100);  // a zoom by 1 leaves the image where the fit had it
     EXPECT_FALSE(v.fitted());
@@ -65,8 +65,8 @@ TEST(ViewTransform, ZoomFromTheFitStartsAtTheFitScale) {
     EXPECT_EQ(r.width, fit.width);
 }
 
-TEST(ViewTransform, PanMovesTheImageAndTheMapping) {
-    ViewTransform v;
+TEST(ImagePlacement, PanMovesTheImageAndTheMapping) {
+    ImagePlacement v;
     v.actualPixels();
     const ImageRect r0 = v.rect(kArea, 100, 100);
     v.panBy(30, -12, kArea, 100, 100);
@@ -78,8 +78,8 @@ TEST(ViewTransform, PanMovesTheImageAndTheMapping) {
     EXPECT_FLOAT_EQ(p.y, 3.25f);
 }
 
-TEST(ViewTransform, PointsOutsideTheImageOrItsAreaMapToNothing) {
-    ViewTransform v;
+TEST(ImagePlacement, PointsOutsideTheImageOrItsAreaMapToNothing) {
+    ImagePlacement v;
     const ImageRect r = v.rect(kArea, 300, 100);
     EXPECT_FALSE(v.imagePoint(r.x - 1, r.y + 5, kArea, 300, 100));
     EXPECT_FALSE(v.imagePoint(r.x + 5, r.y + r.height, kArea, 300, 100));

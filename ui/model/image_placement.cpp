@@ -1,5 +1,5 @@
-// ViewTransform: fit, zoom about a point, pan, and the mapping from framebuffer points to image pixels.
-#include "model/view_transform.h"
+// ImagePlacement: fit, zoom about a point, pan, and the mapping from framebuffer points to image pixels.
+#include "model/image_placement.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,19 +17,19 @@ ImageRect fitImage(const ImageRect& area, uint32_t imageWidth, uint32_t imageHei
     return r;
 }
 
-float ViewTransform::scale(const ImageRect& area, uint32_t imageWidth, uint32_t imageHeight) const {
+float ImagePlacement::scale(const ImageRect& area, uint32_t imageWidth, uint32_t imageHeight) const {
     if (!fitted_) return zoom_;
     if (imageWidth == 0 || imageHeight == 0) return 1.0f;
     return fitImage(area, imageWidth, imageHeight).width / float(imageWidth);
 }
 
-void ViewTransform::actualPixels() {
+void ImagePlacement::actualPixels() {
     fitted_ = false;
     zoom_ = 1.0f;
     panX_ = panY_ = 0;
 }
 
-void ViewTransform::leaveFit(const ImageRect& area, uint32_t imageWidth, uint32_t imageHeight) {
+void ImagePlacement::leaveFit(const ImageRect& area, uint32_t imageWidth, uint32_t imageHeight) {
     if (!fitted_) return;
     const ImageRect r = fitImage(area, imageWidth, imageHeight);
     zoom_ = std::clamp(imageWidth ? r.width / float(imageWidth) : 1.0f, kMinZoom, kMaxZoom);
@@ -38,7 +38,7 @@ void ViewTransform::leaveFit(const ImageRect& area, uint32_t imageWidth, uint32_
     fitted_ = false;
 }
 
-void ViewTransform::zoomBy(float factor, float px, float py, const ImageRect& area, uint32_t imageWidth,
+void ImagePlacement::zoomBy(float factor, float px, float py, const ImageRect& area, uint32_t imageWidth,
                            uint32_t imageHeight) {
     leaveFit(area, imageWidth, imageHeight);
     const float zoom = std::clamp(zoom_ * factor, kMinZoom, kMaxZoom);
@@ -51,13 +51,13 @@ void ViewTransform::zoomBy(float factor, float px, float py, const ImageRect& ar
     zoom_ = zoom;
 }
 
-void ViewTransform::panBy(float dx, float dy, const ImageRect& area, uint32_t imageWidth, uint32_t imageHeight) {
+void ImagePlacement::panBy(float dx, float dy, const ImageRect& area, uint32_t imageWidth, uint32_t imageHeight) {
     leaveFit(area, imageWidth, imageHeight);
     panX_ += dx;
     panY_ += dy;
 }
 
-ImageRect ViewTransform::rect(const ImageRect& area, uint32_t imageWidth, uint32_t imageHeight) const {
+ImageRect ImagePlacement::rect(const ImageRect& area, uint32_t imageWidth, uint32_t imageHeight) const {
     if (fitted_) return fitImage(area, imageWidth, imageHeight);
     ImageRect r;
     r.width = float(imageWidth) * zoom_;
@@ -67,14 +67,14 @@ ImageRect ViewTransform::rect(const ImageRect& area, uint32_t imageWidth, uint32
     return r;
 }
 
-ImagePoint ViewTransform::toImage(float px, float py, const ImageRect& area, uint32_t imageWidth,
+ImagePoint ImagePlacement::toImage(float px, float py, const ImageRect& area, uint32_t imageWidth,
                                   uint32_t imageHeight) const {
     const ImageRect r = rect(area, imageWidth, imageHeight);
     if (r.width <= 0 || r.height <= 0) return {};
     return ImagePoint{(px - r.x) / r.width * float(imageWidth), (py - r.y) / r.height * float(imageHeight)};
 }
 
-std::optional<ImagePoint> ViewTransform::imagePoint(float px, float py, const ImageRect& area, uint32_t imageWidth,
+std::optional<ImagePoint> ImagePlacement::imagePoint(float px, float py, const ImageRect& area, uint32_t imageWidth,
                                                     uint32_t imageHeight) const {
     const ImageRect r = rect(area, imageWidth, imageHeight);
     if (r.width <= 0 || r.height <= 0 || !r.contains(px, py) || !area.contains(px, py)) return std::nullopt;

@@ -1,0 +1,63 @@
+// What the path tracer asks of the scene's lights (SPEC §7): one light chosen per shading point for next-event
+// estimation, its sample, and the density the same choice gives a direction a BSDF sample found, for multiple
+// importance sampling. Lights: the point and area lights (lights/), and the environment where it is not black.
+#pragma once
+
+#include "integrator/scene_intersect.h"
+#include "lights/visit_light.h"
+#include "shading/microfacet.h"
+
+namespace trazo {
+
+// The uniform background of SPEC §7 (BackgroundColor, radiance), sampled uniformly over the sphere.
+TRAZO_HD bool hasEnvironment(const SceneView& scene) { return maxComponent(scene.settings.background) > 0.0f; }
+TRAZO_HD Vec3 environmentRadiance(const SceneView& scene, Vec3) { return scene.settings.background; }
+TRAZO_HD float pdfEnvironment(const SceneView&, Vec3) { return 1.0f / (4.0f * kPi); }
+TRAZO_HD LightSample sampleEnvironment(const SceneView& scene, float u1, float u2) {
+    const float z = 1.0f - 2.0f * u1;
+    const float r = 2.0f * sqrtf(maxOf(0.0f, u1 * (1.0f - u1)));
+    const float phi = 2.0f * kPi * u2;
+    return LightSample{Vec3(r * cosf(phi), r * sinf(phi), z), scene.settings.background, 1.0f / (4.0f * kPi),
+                       INFINITY, false};
+}
+
+// How many lights next-event estimation chooses among: point lights, area lights, then the environment.
+TRAZO_HD uint32_t sampledLightCount(const SceneView& scene) {
+    return scene.pointLights.count + scene.areaLights.count + (hasEnvironment(scene) ? 1u : 0u);
+}
+
+// The probability of choosing any one light (uniform: every light is chosen as often).
+TRAZO_HD float lightChoicePdf(const SceneView& scene) {
+    const uint32_t n = sampledLightCount(scene);
+    return n > 0 ? 1.0f / float(n) : 0.0f;
+}
+
+// A light sample towards light `index` of that order.
+TRAZO_HD LightSample sampleLightAt(const SceneView& scene, uint32_t index, Vec3 p, float u1, float u2,
+                                   uint32_t& areaLight) {
+    areaLight = kNoObject;
+    if (index < scene.pointLights.count) return sampleLi(scene.pointLights[index], p, u1, u2);
+    index -= scene.pointLights.count;
+    if (index < scene.areaLights.count) {
+        areaLight = index;
+        return sampleLi(scene.areaLights[index], p, u1, u2);
+    }
+    return sampleEnvironment(scene, u1, u2);
+}
+
+// True when something opaque lies on the ray within (0, tMax): an object, or under SPEC §7 an area light's
+// rectangle (black and opaque from both sides) other than `skipLight`, the one the ray is aimed at.
+TRAZO_HD bool pathOccluded(const SceneView& scene, const Ray& ray, float tMax, uint32_t skipLight) {
+    ShapeHit hit;
+    for (uint32_t i = 0; i < scene.areaLights.count; ++i)
+        if (i != skipLight && intersectRectangle(scene.areaLights[i].rect, ray, 0.0f, tMax, hit)) return true;
+    return occluded(scene, ray, tMax);
+}
+
+// The power heuristic (β = 2) weight of a strategy of density a against one of density b.
+TRAZO_HD float powerHeuristic(float a, float b) {
+    const float a2 = a * a, b2 = b * b;
+    return a2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
+}
+
+}  // namespace trazo
