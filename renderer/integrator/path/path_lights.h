@@ -4,6 +4,7 @@
 #pragma once
 
 #include "integrator/scene_intersect.h"
+#include "integrator/strata.h"
 #include "lights/visit_light.h"
 #include "shading/microfacet.h"
 
@@ -32,15 +33,19 @@ TRAZO_HD float lightChoicePdf(const SceneView& scene) {
     return n > 0 ? 1.0f / float(n) : 0.0f;
 }
 
-// A light sample towards light `index` of that order.
-TRAZO_HD LightSample sampleLightAt(const SceneView& scene, uint32_t index, Vec3 p, float u1, float u2,
-                                   uint32_t& areaLight) {
+// A light sample towards light `index` of that order. An area light's point lies in this pass's cell of its
+// Subdivision grid (SPEC §7: its strata), the cells visited in an order of their own at each path vertex.
+TRAZO_HD LightSample sampleLightAt(const SceneView& scene, uint32_t index, Vec3 p, const StrataKey& vertexStrata,
+                                   float u1, float u2, uint32_t& areaLight) {
     areaLight = kNoObject;
     if (index < scene.pointLights.count) return sampleLi(scene.pointLights[index], p, u1, u2);
     index -= scene.pointLights.count;
     if (index < scene.areaLights.count) {
         areaLight = index;
-        return sampleLi(scene.areaLights[index], p, u1, u2);
+        const AreaLightData& light = scene.areaLights[index];
+        const uint32_t cell = vertexStrata.stratum(kGridAreaLightBase + index, light.cellsU * light.cellsV);
+        return sampleLi(light, p, (float(cell % light.cellsU) + u1) / float(light.cellsU),
+                        (float(cell / light.cellsU) + u2) / float(light.cellsV));
     }
     return sampleEnvironment(scene, u1, u2);
 }
