@@ -10,8 +10,9 @@
   pfm_tool.py lightmask OUT.pfm W H
       1 where a pixel's square overlaps the Cornell box's light as the camera of scenes/cornell_box.scene sees
       it (SPEC §3's camera: vertical FOV 39.3077, pixel (0, 0) top-left), else 0: image_error --relmse --mask
-  pfm_tool.py png OUT.png A.pfm [B.pfm ...] [--scale S] [--gap G]
-      the images side by side (G black pixels between them), each pixel scaled S times (nearest), through
+  pfm_tool.py png OUT.png A.pfm [B.pfm ...] [--scale S] [--downsample K] [--gap G]
+      the images side by side (G black pixels between them), each first averaged over K×K blocks (linear)
+      and then each pixel scaled S times (nearest), through
       SPEC §7's `srgb` view: round(255 * sRGB(clamp(x, 0, 1))), Exposure 0
 """
 import array
@@ -60,7 +61,29 @@ def srgb8(x):
 
 
 def write_png(path, w, h, rows):  # rows: top row first, each bytes of RGB8
-    raw = b"".join(b"\x00" + r for r in rows)
+    # Each row under the PNG filter (None, Sub, Up, Average, Paeth) with the least sum of |bytes| (the usual
+    # heuristic): noisy renders compress a third better than unfiltered.
+    def paeth(a, b, c):
+        p = a + b - c
+        pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+        return a if pa <= pb and pa <= pc else (b if pb <= pc else c)
+
+    out, prev = [], bytes(3 * w)
+    for row in rows:
+        cands = []
+        for kind in range(5):
+            f = bytearray(len(row))
+            for i, x in enumerate(row):
+                a = row[i - 3] if i >= 3 else 0
+                b = prev[i]
+                c = prev[i - 3] if i >= 3 else 0
+                pred = (0, a, b, (a + b) // 2, paeth(a, b, c) if kind == 4 else 0)[kind]
+                f[i] = (x - pred) & 0xFF
+            cands.append((sum(v if v < 128 else 256 - v for v in f), kind, f))
+        _, kind, f = min(cands)
+        out.append(bytes([kind]) + bytes(f))
+        prev = row
+    raw = b"".join(out)
 
     def chunk(tag, body):
         return struct.pack(">I", len(body)) + tag + body + struct.pack(">I", zlib.crc32(tag + body) & 0xFFFFFFFF)
@@ -100,6 +123,20 @@ def light_mask(w, h):
                 i = 3 * ((h - 1 - y) * w + x)
                 px[i] = px[i + 1] = px[i + 2] = 1.0
     return px
+
+
+def downsample(image, k):  # k×k box means, in linear values
+    w, h, px = image
+    if k == 1:
+        return image
+    W, H = w // k, h // k
+    out = array.array("f", [0.0]) * (3 * W * H)
+    for Y in range(H):
+        for X in range(W):
+            for c in range(3):
+                out[3 * (Y * W + X) + c] = sum(px[3 * ((Y * k + j) * w + X * k + i) + c]
+                                               for j in range(k) for i in range(k)) / (k * k)
+    return W, H, out
 
 
 def option(args, name, default, count=1):
@@ -155,8 +192,9 @@ def main(argv):
         print("lightmask %d pixels" % (sum(mask) // 3))
     elif cmd == "png":
         scale = int(option(args, "--scale", "1"))
+        down = int(option(args, "--downsample", "1"))
         gap = int(option(args, "--gap", "4"))
-        out, images = args[0], [read_pfm(p) for p in args[1:]]
+        out, images = args[0], [downsample(read_pfm(p), down) for p in args[1:]]
         h = images[0][1]
         if any(img[1] != h for img in images):
             sys.exit("pfm_tool: heights differ")
