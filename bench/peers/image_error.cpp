@@ -4,12 +4,19 @@
 //   image_error --variance A B    → "variance V rel_sd S mean M": A and B are two renders of one scene with
 //                                   different seeds, so E[(A−B)²] = 2·Var and Var ≈ mean((A−B)²)/2 per
 //                                   pixel-channel; rel_sd = √Var / mean((A+B)/2), one render's relative error.
+//   image_error --relmse A REF [--exclude-above T] [--mask M]
+//                                 → "relmse R pixels N excluded K mean_a r g b mean_ref r g b": the relative
+//                                   MSE, mean over pixels and channels of (a−r)²/(r²+0.01) (the denoising
+//                                   literature's ε); pixels whose reference exceeds T in any channel (e.g. a
+//                                   light seen directly) or whose mask M (any image of the same size) is
+//                                   above 0.5 in any channel are left out, of the relMSE and of the means.
 // Reads .pfm (our own reader: FreeImage shows PFM rows upside down) and, through the renderer's texture
 // reader (FreeImage), .exr/.hdr as floats and .png/.bmp/... as 8- or 16-bit values over 255 or 65535.
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -82,10 +89,71 @@ double meanValue(const std::vector<Vec3>& p) {
 
 }  // namespace
 
+// --relmse: see the top of the file.
+static int relativeMse(int argc, char** argv) {
+    std::string paths[2], maskPath;
+    int count = 0;
+    double above = INFINITY;
+    for (int i = 2; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--exclude-above" && i + 1 < argc) {
+            char* end = nullptr;
+            above = std::strtod(argv[++i], &end);
+            if (!end || *end || !(above == above)) return std::fprintf(stderr, "image_error: bad threshold\n"), 2;
+        } else if (arg == "--mask" && i + 1 < argc) {
+            maskPath = argv[++i];
+        } else if (count < 2 && !(arg.size() > 1 && arg[0] == '-' && arg[1] == '-')) {
+            paths[count++] = arg;
+        } else {
+            count = 3;
+            break;
+        }
+    }
+    if (count != 2) {
+        std::fprintf(stderr, "usage: image_error --relmse A REFERENCE [--exclude-above T] [--mask M]\n");
+        return 2;
+    }
+    Image a, b, mask;
+    std::string error;
+    if (!readImage(paths[0], a, error) || !readImage(paths[1], b, error) ||
+        (!maskPath.empty() && !readImage(maskPath, mask, error))) {
+        std::fprintf(stderr, "image_error: %s\n", error.c_str());
+        return 2;
+    }
+    if (a.width != b.width || a.height != b.height ||
+        (!maskPath.empty() && (mask.width != b.width || mask.height != b.height))) {
+        std::fprintf(stderr, "image_error: sizes differ\n");
+        return 2;
+    }
+    double sum = 0, meanA[3] = {}, meanB[3] = {};
+    size_t used = 0;
+    for (size_t i = 0; i < b.pixels.size(); ++i) {
+        const Vec3 x = a.pixels[i], y = b.pixels[i];
+        if (y.x > above || y.y > above || y.z > above) continue;
+        if (!maskPath.empty() && (mask.pixels[i].x > 0.5f || mask.pixels[i].y > 0.5f || mask.pixels[i].z > 0.5f))
+            continue;
+        const double xs[3] = {x.x, x.y, x.z}, ys[3] = {y.x, y.y, y.z};
+        for (int c = 0; c < 3; ++c) {
+            const double d = xs[c] - ys[c];
+            sum += d * d / (ys[c] * ys[c] + 0.01);
+            meanA[c] += xs[c], meanB[c] += ys[c];
+        }
+        ++used;
+    }
+    const double n = used ? double(used) : 1.0;
+    std::printf("relmse %.6g pixels %zu excluded %zu mean_a %.6g %.6g %.6g mean_ref %.6g %.6g %.6g\n",
+                used ? sum / (3.0 * n) : 0.0, used, b.pixels.size() - used, meanA[0] / n, meanA[1] / n, meanA[2] / n,
+                meanB[0] / n, meanB[1] / n, meanB[2] / n);
+    return 0;
+}
+
 int main(int argc, char** argv) {
+    if (argc >= 2 && std::string(argv[1]) == "--relmse") return relativeMse(argc, argv);
     const bool variance = argc == 4 && std::string(argv[1]) == "--variance";
     if (!variance && argc != 3) {
-        std::fprintf(stderr, "usage: image_error IMAGE REFERENCE | image_error --variance A B\n");
+        std::fprintf(stderr,
+                     "usage: image_error IMAGE REFERENCE | image_error --variance A B\n"
+                     "       image_error --relmse A REFERENCE [--exclude-above T] [--mask M]\n");
         return 2;
     }
     Image a, b;
