@@ -50,6 +50,7 @@ namespace {
 
 // Every scene in scenes/: ShippedScenesAreAllListed fails when a new one is not added here.
 const char* const kShippedScenes[] = {
+    "cornell_box.scene",
     "effect_depth_of_field.scene",   "effect_dispersion.scene",      "effect_fresnel.scene",
     "effect_gallery.scene",          "effect_rough_glass.scene",     "effect_subsurface.scene",
     "extra1_refract_indirect.scene", "path_gallery.scene",           "scene10_bunny_indirect.scene", "scene10_bunny_indirect_area.scene",

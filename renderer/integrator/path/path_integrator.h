@@ -18,10 +18,13 @@ TRAZO_HD Vec3 pathSample(const SceneView& scene, const FrameParams& frame, uint3
     const StrataKey pixelStrata{frame.strataSeed(pass), pixelIndex, pass, kSampleTreeRoot};
     const uint32_t k = antialiasingSide(scene.settings.antialiasing);
     const uint32_t cell = pixelStrata.stratum(kGridAntialiasing, k * k);
-    const float x = float(px) + (float(cell % k) + rng.next()) / float(k);
-    const float y = float(py) + (float(cell / k) + rng.next()) / float(k);
+    const PathSampler sampler(frame, pixelIndex, pass);
+    float jx, jy;
+    sampler.get2D(kDimensionPixel, jx, jy);
+    const float x = float(px) + (float(cell % k) + jx) / float(k);
+    const float y = float(py) + (float(cell / k) + jy) / float(k);
     const Ray ray = cameraRay(frame.camera, scene.settings, x, y, pixelStrata, 0, rng);
-    return tracePath(scene, ray, pixelStrata, rng, rays);
+    return tracePath(scene, ray, pixelStrata, sampler, rng, rays);
 }
 
 struct PathIntegrator {

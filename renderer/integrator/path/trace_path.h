@@ -5,6 +5,7 @@
 #pragma once
 
 #include "integrator/path/path_lights.h"
+#include "integrator/path/path_sampler.h"
 #include "integrator/subsurface.h"
 #include "integrator/surface.h"
 #include "shading/bsdf.h"
@@ -42,9 +43,12 @@ TRAZO_HD bool hasSmoothLobe(const Bsdf& b) {
 // Next-event estimation at sp: one light chosen uniformly, one sample of it, its shadow ray. pointOnly: among
 // the point lights alone (LightSampling bsdf, where every other light is found by scattered rays).
 TRAZO_HD Vec3 sampleOneLight(const SceneView& scene, const ShadingPoint& sp, const Bsdf& bsdf, bool pointOnly,
-                             const StrataKey& vertexStrata, SampleStream& rng, uint32_t& rays) {
+                             const StrataKey& vertexStrata, const PathSampler& sampler, uint32_t vertex,
+                             uint32_t& rays) {
     const uint32_t count = pointOnly ? scene.pointLights.count : sampledLightCount(scene);
-    const float u = rng.next(), u1 = rng.next(), u2 = rng.next();
+    const float u = sampler.get1D(lightChoiceDimension(vertex));
+    float u1, u2;
+    sampler.get2D(lightPointDimension(vertex), u1, u2);
     if (count == 0) return Vec3(0.0f);
     const uint32_t index = minOf(uint32_t(u * float(count)), count - 1);
     uint32_t areaLight;
@@ -139,9 +143,10 @@ TRAZO_HD bool leaveAfterWalk(const SceneView& scene, const SurfaceHit& hit, cons
     return true;
 }
 
-// pixelStrata: the pixel's strata in this pass; each vertex of the path draws its own (node = its depth).
-TRAZO_HD Vec3 tracePath(const SceneView& scene, Ray ray, const StrataKey& pixelStrata, SampleStream& rng,
-                        uint32_t& rays) {
+// pixelStrata: the pixel's strata in this pass; each vertex of the path draws its own (node = its depth). sampler:
+// the pass's point of the pixel's sequence (light and BSDF samples); rng: the other draws (roulette, walks).
+TRAZO_HD Vec3 tracePath(const SceneView& scene, Ray ray, const StrataKey& pixelStrata, const PathSampler& sampler,
+                        SampleStream& rng, uint32_t& rays) {
     const RenderSettings& s = scene.settings;
     PathState path;
     for (uint32_t scatterings = 0;; ++scatterings) {
@@ -172,10 +177,12 @@ TRAZO_HD Vec3 tracePath(const SceneView& scene, Ray ray, const StrataKey& pixelS
                                      kSampleTreeRoot + scatterings};
         if (hasSmoothLobe(bsdf)) {  // point lights are sampled whatever LightSampling says: no ray finds them
             const bool pointOnly = s.lightSampling == LightSampling::Bsdf;
-            path.radiance += path.beta * sampleOneLight(scene, sp, bsdf, pointOnly, vertexStrata, rng, rays);
+            path.radiance += path.beta * sampleOneLight(scene, sp, bsdf, pointOnly, vertexStrata, sampler, scatterings, rays);
         }
 
-        const float uLobe = rng.next(), u1 = rng.next(), u2 = rng.next();
+        const float uLobe = sampler.get1D(lobeDimension(scatterings));
+        float u1, u2;
+        sampler.get2D(directionDimension(scatterings), u1, u2);
         BsdfSample bs;
         if (!bsdf.sample(sp.v, uLobe, u1, u2, bs)) break;
         path.beta *= bs.weight;
