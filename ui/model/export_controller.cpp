@@ -1,6 +1,8 @@
 // ExportController: timestamped names, the image and scene writers, and the status lines they leave.
 #include "model/export_controller.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -13,6 +15,9 @@ namespace {
 void copyString(char* dst, size_t size, const std::string& src) { std::snprintf(dst, size, "%s", src.c_str()); }
 
 void report(const std::string& status) { std::fprintf(stderr, "trazo: %s\n", status.c_str()); }
+
+// shaders/display.frag's filmic tone (Narkowicz's fit of ACES, 2015), before its sRGB encoding.
+float filmic(float c) { return std::clamp((c * (2.51f * c + 0.03f)) / (c * (2.43f * c + 0.59f) + 0.14f), 0.0f, 1.0f); }
 
 }  // namespace
 
@@ -31,9 +36,28 @@ std::string editedScenePath(const std::string& scenePath) {
     return (p.parent_path() / (p.stem().string() + "-edited.scene")).string();
 }
 
-bool saveSessionImage(ViewerSession& session, const std::string& path, std::string& message) {
+ToneSettings shownTone(const SceneSettings& settings, const ToneSettings& panel) {
+    ToneSettings shown = panel;
+    shown.exposureStops = settings.exposure + panel.exposureStops;
+    if (panel.mode == 0 && resolveViewTransform(settings.viewTransform, settings.integrator) == ViewTransform::Srgb)
+        shown.mode = 1;
+    return shown;
+}
+
+bool saveSessionImage(ViewerSession& session, const std::string& path, const ToneSettings& tone,
+                      std::string& message) {
+    const ToneSettings shown = shownTone(session.scene().settings, tone);
+    DisplayTransform display{std::exp2(shown.exposureStops), shown.mode != 0};
+    std::vector<Vec3> image = session.image();
+    ImageFormat format;
+    if (shown.mode == 2 && imageFormatFromPath(path, format) && !storesFloats(format)) {
+        // The filmic curve, which DisplayTransform does not hold, applied here; 8-bit files only, as the
+        // transfer function (float files store the exposed value).
+        for (Vec3& p : image) p = {filmic(display.scale * p.x), filmic(display.scale * p.y), filmic(display.scale * p.z)};
+        display.scale = 1.0f;
+    }
     std::string error;
-    if (!writeImage(path, int(session.width()), int(session.height()), session.image(), error)) {
+    if (!writeImage(path, int(session.width()), int(session.height()), image, error, display)) {
         message = error;
         return false;
     }
@@ -58,7 +82,7 @@ void ExportController::renameScreenshot(PanelState& state) {
 
 void ExportController::saveScreenshot(ViewerSession& session, PanelState& state) {
     const std::string path = state.screenshotPath;
-    saveSessionImage(session, path, state.status);
+    saveSessionImage(session, path, state.tone, state.status);
     report(state.status);
     if (!defaultName_.empty() && path == defaultName_)
         showDefault(std::filesystem::path(path).extension().string(), state);

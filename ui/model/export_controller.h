@@ -17,8 +17,16 @@ std::string timestampedName(const std::string& extension, std::time_t when, cons
 // SCENE-edited.scene beside SCENE.
 std::string editedScenePath(const std::string& scenePath);
 
-// Writes the session's image to `path`: "saved PATH (N passes)" in `message`, or writeImage's reason.
-bool saveSessionImage(ViewerSession& session, const std::string& path, std::string& message);
+// What the viewer shows (SPEC §7 Image): 2^(the scene's Exposure + the panel's) × the pixel, through the scene's
+// ViewTransform under the panel's first tone ("clamp": mode 0 stays linear, or becomes 1 where the scene says
+// srgb); the panel's sRGB and filmic tones replace the scene's transform. The display draws it, a screenshot
+// stores it.
+ToneSettings shownTone(const SceneSettings& settings, const ToneSettings& panel);
+
+// Writes the session's image to `path` as the viewer shows it with the panel's `tone` (8-bit files: the bytes
+// shown; float files: the exposed value, linear): "saved PATH (N passes)" in `message`, or writeImage's reason.
+bool saveSessionImage(ViewerSession& session, const std::string& path, const ToneSettings& tone,
+                      std::string& message);
 
 // Acts on the Export panel's fields (PanelState::screenshotPath, scenePath, status).
 class ExportController {

@@ -1,9 +1,14 @@
 // Tests of the viewer's export policy without a window: timestamped names that never overwrite, a default name
-// used once, a typed name kept, the edited scene beside the original, and the status lines.
+// used once, a typed name kept, the edited scene beside the original, the status lines, and a screenshot that
+// stores what the viewer shows (SPEC §7 Image).
 #include "model/export_controller.h"
 
+#include <FreeImage.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -121,6 +126,79 @@ TEST(ExportController, SavesTheSceneItIsGiven) {
     const Scene back = readSceneFile((dir / "a-edited.scene").string(), diags);
     EXPECT_FALSE(diags.hasErrors());
     EXPECT_EQ(back.materials.size(), session->scene().materials.size());
+}
+
+// SPEC §7 Image in the viewer: the scene's Exposure and ViewTransform, with the panel's exposure added and its
+// sRGB or filmic tone in place of the scene's transform.
+TEST(ExportController, TheShownToneIsTheScenesWithThePanelsOnTop) {
+    const SceneSettings thesis;  // ViewTransform auto: linear under thesis
+    EXPECT_EQ(shownTone(thesis, ToneSettings{}).mode, 0);
+    EXPECT_EQ(shownTone(thesis, ToneSettings{0.0f, 1}).mode, 1);
+    SceneSettings path;
+    path.integrator = IntegratorKind::Path;  // auto: sRGB under path
+    path.exposure = 1.0f;
+    const ToneSettings shown = shownTone(path, ToneSettings{0.5f, 0});
+    EXPECT_EQ(shown.exposureStops, 1.5f);
+    EXPECT_EQ(shown.mode, 1);
+    EXPECT_EQ(shownTone(path, ToneSettings{0.0f, 2}).mode, 2);
+    path.viewTransform = ViewTransform::Linear;
+    EXPECT_EQ(shownTone(path, ToneSettings{}).mode, 0);
+}
+
+// Top-down bytes of a 24-bit file, R, G, B.
+std::vector<std::array<int, 3>> readBytes(const std::string& path) {
+    std::vector<std::array<int, 3>> pixels;
+    FIBITMAP* bitmap = FreeImage_Load(FreeImage_GetFileType(path.c_str()), path.c_str());
+    EXPECT_NE(bitmap, nullptr) << path;
+    if (!bitmap) return pixels;
+    const int w = int(FreeImage_GetWidth(bitmap)), h = int(FreeImage_GetHeight(bitmap));
+    for (int y = h - 1; y >= 0; --y) {
+        const BYTE* line = FreeImage_GetScanLine(bitmap, y);
+        for (int x = 0; x < w; ++x)
+            pixels.push_back({line[3 * x + FI_RGBA_RED], line[3 * x + FI_RGBA_GREEN], line[3 * x + FI_RGBA_BLUE]});
+    }
+    FreeImage_Unload(bitmap);
+    return pixels;
+}
+
+std::vector<std::array<int, 3>> expectedBytes(const std::vector<Vec3>& image, float (*tone)(float)) {
+    std::vector<std::array<int, 3>> bytes;
+    const auto byte = [&](float x) { return int(std::floor(255.0 * double(tone(x)) + 0.5)); };
+    for (const Vec3& p : image) bytes.push_back({byte(p.x), byte(p.y), byte(p.z)});
+    return bytes;
+}
+
+TEST(ExportController, AScreenshotStoresWhatTheViewerShows) {
+    const fs::path dir = freshDir("export_tone");
+    const std::unique_ptr<ViewerSession> session = smallSession();
+    session->renderPasses(1);
+    session->scene().settings.exposure = 1.0f;  // the image transform only: nothing to re-render
+    session->scene().settings.viewTransform = ViewTransform::Srgb;
+    const std::vector<Vec3> image = session->image();
+    std::string message;
+    // The panel's +0.5 on the scene's +1: 2^1.5, then sRGB, as the display's sRGB tone shows it.
+    ASSERT_TRUE(saveSessionImage(*session, (dir / "shot.png").string(), ToneSettings{0.5f, 0}, message)) << message;
+    EXPECT_EQ(readBytes((dir / "shot.png").string()), expectedBytes(image, [](float x) {
+                  return DisplayTransform{std::exp2(1.5f), true}.encode(x);
+              }));
+    // Filmic (the shader's curve), then sRGB.
+    ASSERT_TRUE(saveSessionImage(*session, (dir / "filmic.png").string(), ToneSettings{0.5f, 2}, message));
+    EXPECT_EQ(readBytes((dir / "filmic.png").string()), expectedBytes(image, [](float x) {
+                  const float c = std::exp2(1.5f) * x;
+                  const float f = std::clamp((c * (2.51f * c + 0.03f)) / (c * (2.43f * c + 0.59f) + 0.14f), 0.0f, 1.0f);
+                  return DisplayTransform{1.0f, true}.encode(f);
+              }));
+    // A float file stores the exposed value, linear, whatever the tone.
+    ASSERT_TRUE(saveSessionImage(*session, (dir / "shot.exr").string(), ToneSettings{0.5f, 2}, message));
+    FIBITMAP* exr = FreeImage_Load(FIF_EXR, (dir / "shot.exr").c_str());
+    ASSERT_NE(exr, nullptr);
+    const int w = int(FreeImage_GetWidth(exr)), h = int(FreeImage_GetHeight(exr));
+    ASSERT_EQ(size_t(w) * size_t(h), image.size());
+    for (int y = 0; y < h; ++y) {
+        const auto* line = reinterpret_cast<const FIRGBF*>(FreeImage_GetScanLine(exr, h - 1 - y));
+        for (int x = 0; x < w; ++x) EXPECT_EQ(line[x].red, std::exp2(1.5f) * image[size_t(y) * w + x].x);
+    }
+    FreeImage_Unload(exr);
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ void ViewerApp::drawFrame(Display& display) {
     int fbw, fbh;
     window_.framebufferSize(fbw, fbh);
     updateArea();
-    display.draw(fbw, fbh, area_, imageRect(), state_.tone);
+    display.draw(fbw, fbh, area_, imageRect(), shownTone(session_.scene().settings, state_.tone));  // = a screenshot
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     window_.swapBuffers();
 }
@@ -220,7 +220,7 @@ void ViewerApp::followAreaSize() {
 int ViewerApp::finishAutomation() {
     if (options_.screenshot.empty()) return 0;
     std::string message;
-    if (!saveSessionImage(session_, options_.screenshot, message)) {
+    if (!saveSessionImage(session_, options_.screenshot, state_.tone, message)) {
         std::fprintf(stderr, "trazo: %s\n", message.c_str());
         return 1;
     }
