@@ -23,6 +23,9 @@
 #   ≤ 704 bytes in the 17th variant, every feature with SPEC §6's dispersion and subsurface scattering (660
 #   at its introduction: 16 over the indirect variant with reflection and refraction, for the dispersing ray's
 #   channel and the walk's state); only scenes that use those two effects run it.
+#   ≤ 640 bytes in the path tracer's one instance (SPEC §7, renderPassKernel<path, 0>): a path holds its BSDF
+#   (frame, lobe weights and probabilities) and its throughput while the light sample's shadow ray traverses,
+#   as an indirect variant holds its two shading points; it keeps no pending-ray stack.
 # - stack ≤ 1536 bytes + the spill slots + the pending-ray stack (kMaxPendingRays × 44 bytes = 1408) where
 #   reflection or refraction is compiled in. The frame is reserved for every thread the device can hold, but
 #   only what a thread touches costs bandwidth: a few pending rays and a traversal stack as deep as the BVH.
@@ -62,7 +65,7 @@ table=$(while read -r mangled regs stack stores loads; do
   # renderPassKernel<(trazo::IntegratorKind)0, 66u>(…) reads renderPassKernel<thesis, 66u> (integrator 0 of
   # core/integrator_kinds.h, feature bits 66).
   kernel=$(echo "$mangled" | c++filt | sed -E 's/^void //; s/^trazo::(\(anonymous namespace\)::)?//;
-    s/\(trazo::IntegratorKind\)0/thesis/; s/>\(.*/>/; s/^([A-Za-z]+)\(.*/\1/')
+    s/\(trazo::IntegratorKind\)0/thesis/; s/\(trazo::IntegratorKind\)1/path/; s/>\(.*/>/; s/^([A-Za-z]+)\(.*/\1/')
   block=256; [[ $kernel == rayQueryKernel* ]] && block=128
   perWarp=$(( (regs * 32 + 255) / 256 * 256 ))
   warps=$(( 65536 / perWarp )); (( warps > 64 )) && warps=64
@@ -74,6 +77,7 @@ table=$(while read -r mangled regs stack stores loads; do
   spillBudget=256; (( features & 64 )) && spillBudget=656
   (( (features & 64) && (features & 2) && (features & (4 | 16)) )) && spillBudget=752
   (( features & (1024 | 2048) )) && spillBudget=704
+  [[ $kernel == renderPassKernel\<path* ]] && spillBudget=640
   stackBudget=$(( 1536 + (stores + 15) / 16 * 16 ))  # spill slots take whole 16-byte steps of the frame
   (( features & (4 | 16) )) && stackBudget=$(( stackBudget + 1408 ))
   verdict=ok

@@ -57,7 +57,7 @@ TEST_P(ErrorHonesty, DefaultRenderStatesItsTrueErrorWithinAFactorOf1_5) {
     ASSERT_TRUE(backend) << error;
     backend->upload(arrays);
 
-    const uint32_t passes = cameraPathPasses(arrays, headlessBlocks(arrays));
+    const uint32_t passes = defaultPasses(arrays, headlessBlocks(arrays));
     const Rendered reference = render(*backend, scene, arrays, 1000, kReferenceFactor * passes);
     ASSERT_TRUE(reference.estimate.available);
     // One render's error is itself a random number, heavy-tailed where a few pixels carry most of it (a

@@ -1,5 +1,6 @@
 // Flattening of the host scene into the arrays kernels read, and the scene's feature mask.
 #include "flatten/flatten.h"
+#include "flatten/environment_tables.h"
 #include "flatten/flatten_csg.h"
 #include "flatten/flatten_mesh.h"
 #include "flatten/mesh_reuse.h"
@@ -153,6 +154,7 @@ FlattenResult flatten(const Scene& scene, FlattenResult* previous) {
     if (!materials.defaultUsed) materials.data.pop_back();
     out.materials = std::move(materials.data);
     flattenTextures(scene, out);
+    appendEnvironment(s.backgroundColor, s.environmentRotation, s.environmentImage.get(), out);
 
 #define TRAZO_X(Data, array, Kind, ...) \
     for (const Kind& light : scene.array) appendLight(light, out);

@@ -8,6 +8,7 @@
 #include "accel/wide_bvh_node.h"
 #include "core/vec3.h"
 #include "lights/area_light.h"
+#include "lights/environment.h"
 #include "lights/point_light.h"
 #include "lights/rectangle.h"
 #include "objects/scene_view.h"

@@ -25,6 +25,7 @@ struct WideBvhNode;
 struct WideBvhNode8;
 struct MaterialData;
 struct TextureData;
+struct EnvironmentData;
 struct SceneArrays;  // flatten/scene_arrays.h: the owning host copy
 
 // Every array of the flattened scene, once: the object kinds' shape arrays (objects/object_kind_list.h), then
@@ -38,6 +39,8 @@ struct SceneArrays;  // flatten/scene_arrays.h: the owning host copy
     TRAZO_LIGHT_KINDS(X)                \
     X(TextureData, textures)            \
     X(Vec3, texels)                     \
+    X(EnvironmentData, environment)     \
+    X(float, environmentCdf)            \
     X(WideBvhNode, meshNodes)           \
     X(MeshTriangle, triangles)          \
     X(TriangleCorners, triangleCorners) \

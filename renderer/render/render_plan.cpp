@@ -63,6 +63,14 @@ std::string longRenderNote(const SceneArrays& a, const StrataBlocks& blocks, uin
     return note;
 }
 
+// What a render without --spp, --time or --target-error takes: one full cycle of the camera path's strata; under
+// the path tracer, whose cycle may be one pass, the fewest whole cycles of at least kPathDefaultPasses.
+uint32_t defaultPasses(const SceneArrays& arrays, const StrataBlocks& blocks) {
+    const uint32_t cycle = cameraPathPasses(arrays, blocks);
+    if (arrays.settings.integrator != IntegratorKind::Path || cycle >= kPathDefaultPasses) return cycle;
+    return (kPathDefaultPasses + cycle - 1) / cycle * cycle;
+}
+
 RenderPlan planRender(const RenderRequest& request, const Scene& scene, const SceneArrays& arrays) {
     RenderPlan plan;
     plan.width = request.width.value_or(uint32_t(scene.settings.renderWidth));
@@ -71,7 +79,7 @@ RenderPlan planRender(const RenderRequest& request, const Scene& scene, const Sc
     plan.blocks = request.blocks.value_or(headlessBlocks(arrays));
     plan.fullCycle = fullCyclePasses(arrays, plan.blocks);
     plan.noiseless = noSamplingNoise(arrays);
-    const uint32_t cameraPasses = cameraPathPasses(arrays, plan.blocks);
+    const uint32_t cameraPasses = defaultPasses(arrays, plan.blocks);
     const bool openEnded = request.seconds > 0 || request.targetError > 0;
     plan.defaultPasses = !request.spp && !request.passes;
     plan.openEndedPartial = request.partial && plan.defaultPasses && openEnded;

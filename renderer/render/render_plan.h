@@ -59,6 +59,10 @@ RenderPlan planRender(const RenderRequest& request, const Scene& scene, const Sc
 // point Q's lights). Mirrors take no shadow rays, so a mirror chain costs less than this says.
 double raysPerPixelPass(const SceneArrays& arrays, const StrataBlocks& blocks);
 
+// The passes of a render without --spp, --time or --target-error (SPEC §7's path tracer takes at least this many).
+constexpr uint32_t kPathDefaultPasses = 64;
+uint32_t defaultPasses(const SceneArrays& arrays, const StrataBlocks& blocks);
+
 // What a render of `passes` passes over width × height pixels will trace (raysPerPixelPass), and a line that
 // says so before a long one: empty below kLongRenderRays.
 constexpr double kLongRenderRays = 1e10;  // ~100 s at 100 Mrays/s (a CPU); a minute or so on a GPU

@@ -27,8 +27,19 @@ uint64_t unblockedPasses(const SceneArrays& a) {
     return std::min<uint64_t>(std::lcm(std::lcm(glossy, lensStrata(a.settings)), channels), kMaxCyclePasses);
 }
 
+// The path tracer's grids (SPEC §7), one stratum a pass each: the antialiasing cells, the lens and each area
+// light's Subdivision cells.
+uint32_t pathCyclePasses(const SceneArrays& a) {
+    const uint64_t k = antialiasingSide(a.settings.antialiasing);
+    uint64_t cycle = std::lcm(k * k, lensStrata(a.settings));
+    for (const AreaLightData& l : a.areaLights)
+        cycle = std::min<uint64_t>(std::lcm(cycle, (uint64_t)l.cellsU * l.cellsV), kMaxCyclePasses);
+    return (uint32_t)std::min<uint64_t>(cycle, kMaxCyclePasses);
+}
+
 // The lcm of the passes of the grids on the camera path, and with atIndirect of the grids at indirect hits.
 uint32_t cyclePasses(const SceneArrays& a, const StrataBlocks& blocks, bool atIndirect) {
+    if (a.settings.integrator == IntegratorKind::Path) return pathCyclePasses(a);
     uint64_t cycle = 1;
     auto include = [&](uint64_t count, uint32_t target) {
         if (count == 0) return;
@@ -61,6 +72,7 @@ uint32_t cameraPathPasses(const SceneArrays& a, const StrataBlocks& blocks) { re
 // direction, rotated so a pass's directions take different cells, beats the thesis's every-cell fan by 3×
 // in time × variance on scene 9 (the fan spends 25 shadow rays where the direction's own variance dominates).
 StrataBlocks headlessBlocks(const SceneArrays& a) {
+    if (a.settings.integrator == IntegratorKind::Path) return StrataBlocks::ones();  // one stratum a pass
     const uint32_t unblocked = (uint32_t)unblockedPasses(a);
     auto completingIn = [&](uint64_t count) {  // the block that completes a grid of `count` in `unblocked` passes
         if (count == 0 || count > UINT32_MAX) return 1u;

@@ -12,6 +12,7 @@
 #include "scene/block_lexer.h"
 #include "scene/block_table.h"
 #include "scene/csg_reader.h"
+#include "scene/environment_reader.h"
 #include "scene/obj_reader.h"
 #include "scene/param_format.h"
 #include "scene/source_file.h"
@@ -72,7 +73,7 @@ private:
             settings.where = block.where;
             if (!settings.environmentMap.empty()) {
                 settings.environmentMap = resolveRelativePath(file_, settings.environmentMap);
-                settings.environmentImage = readTextureImage(settings.environmentMap, settings.environmentMapAt, diags_);
+                settings.environmentImage = readEnvironmentMap(settings.environmentMap, settings.environmentMapAt, diags_);
             }
             scene_.settings = settings;
         } else if (id == "Camera") {

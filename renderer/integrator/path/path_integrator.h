@@ -21,7 +21,7 @@ TRAZO_HD Vec3 pathSample(const SceneView& scene, const FrameParams& frame, uint3
     const float x = float(px) + (float(cell % k) + rng.next()) / float(k);
     const float y = float(py) + (float(cell / k) + rng.next()) / float(k);
     const Ray ray = cameraRay(frame.camera, scene.settings, x, y, pixelStrata, 0, rng);
-    return tracePath(scene, ray, rng, rays);
+    return tracePath(scene, ray, pixelStrata, rng, rays);
 }
 
 struct PathIntegrator {

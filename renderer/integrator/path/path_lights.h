@@ -1,25 +1,18 @@
 // What the path tracer asks of the scene's lights (SPEC §7): one light chosen per shading point for next-event
 // estimation, its sample, and the density the same choice gives a direction a BSDF sample found, for multiple
-// importance sampling. Lights: the point and area lights (lights/), and the environment where it is not black.
+// importance sampling. Lights: the point and area lights (lights/), and the environment (importance-sampled by
+// its radiance where it has a map).
 #pragma once
 
 #include "integrator/scene_intersect.h"
+#include "integrator/strata.h"
+#include "lights/environment.h"
 #include "lights/visit_light.h"
-#include "shading/microfacet.h"
 
 namespace trazo {
 
-// The uniform background of SPEC §7 (BackgroundColor, radiance), sampled uniformly over the sphere.
-TRAZO_HD bool hasEnvironment(const SceneView& scene) { return maxComponent(scene.settings.background) > 0.0f; }
-TRAZO_HD Vec3 environmentRadiance(const SceneView& scene, Vec3) { return scene.settings.background; }
-TRAZO_HD float pdfEnvironment(const SceneView&, Vec3) { return 1.0f / (4.0f * kPi); }
-TRAZO_HD LightSample sampleEnvironment(const SceneView& scene, float u1, float u2) {
-    const float z = 1.0f - 2.0f * u1;
-    const float r = 2.0f * sqrtf(maxOf(0.0f, u1 * (1.0f - u1)));
-    const float phi = 2.0f * kPi * u2;
-    return LightSample{Vec3(r * cosf(phi), r * sinf(phi), z), scene.settings.background, 1.0f / (4.0f * kPi),
-                       INFINITY, false};
-}
+// The environment is a light where the scene stores one (lights/environment.h: not where it is black).
+TRAZO_HD bool hasEnvironment(const SceneView& scene) { return scene.environment.count > 0; }
 
 // How many lights next-event estimation chooses among: point lights, area lights, then the environment.
 TRAZO_HD uint32_t sampledLightCount(const SceneView& scene) {
@@ -32,15 +25,19 @@ TRAZO_HD float lightChoicePdf(const SceneView& scene) {
     return n > 0 ? 1.0f / float(n) : 0.0f;
 }
 
-// A light sample towards light `index` of that order.
-TRAZO_HD LightSample sampleLightAt(const SceneView& scene, uint32_t index, Vec3 p, float u1, float u2,
-                                   uint32_t& areaLight) {
+// A light sample towards light `index` of that order. An area light's point lies in this pass's cell of its
+// Subdivision grid (SPEC §7: its strata), the cells visited in an order of their own at each path vertex.
+TRAZO_HD LightSample sampleLightAt(const SceneView& scene, uint32_t index, Vec3 p, const StrataKey& vertexStrata,
+                                   float u1, float u2, uint32_t& areaLight) {
     areaLight = kNoObject;
     if (index < scene.pointLights.count) return sampleLi(scene.pointLights[index], p, u1, u2);
     index -= scene.pointLights.count;
     if (index < scene.areaLights.count) {
         areaLight = index;
-        return sampleLi(scene.areaLights[index], p, u1, u2);
+        const AreaLightData& light = scene.areaLights[index];
+        const uint32_t cell = vertexStrata.stratum(kGridAreaLightBase + index, light.cellsU * light.cellsV);
+        return sampleLi(light, p, (float(cell % light.cellsU) + u1) / float(light.cellsU),
+                        (float(cell / light.cellsU) + u2) / float(light.cellsV));
     }
     return sampleEnvironment(scene, u1, u2);
 }

@@ -40,13 +40,13 @@ TRAZO_HD bool hasSmoothLobe(const Bsdf& b) {
 // Next-event estimation at sp: one light chosen uniformly, one sample of it, its shadow ray. pointOnly: among
 // the point lights alone (LightSampling bsdf, where every other light is found by scattered rays).
 TRAZO_HD Vec3 sampleOneLight(const SceneView& scene, const ShadingPoint& sp, const Bsdf& bsdf, bool pointOnly,
-                             SampleStream& rng, uint32_t& rays) {
+                             const StrataKey& vertexStrata, SampleStream& rng, uint32_t& rays) {
     const uint32_t count = pointOnly ? scene.pointLights.count : sampledLightCount(scene);
     const float u = rng.next(), u1 = rng.next(), u2 = rng.next();
     if (count == 0) return Vec3(0.0f);
     const uint32_t index = minOf(uint32_t(u * float(count)), count - 1);
     uint32_t areaLight;
-    const LightSample ls = sampleLightAt(scene, index, sp.p, u1, u2, areaLight);
+    const LightSample ls = sampleLightAt(scene, index, sp.p, vertexStrata, u1, u2, areaLight);
     if (!(ls.pdf > 0.0f) || maxComponent(ls.radiance) <= 0.0f) return Vec3(0.0f);
     const Vec3 f = bsdf.evalCos(sp.v, ls.wi);
     if (maxComponent(f) <= 0.0f) return Vec3(0.0f);
@@ -97,7 +97,9 @@ TRAZO_HD bool leaveAfterWalk(const SceneView& scene, const SurfaceHit& hit, cons
     return true;
 }
 
-TRAZO_HD Vec3 tracePath(const SceneView& scene, Ray ray, SampleStream& rng, uint32_t& rays) {
+// pixelStrata: the pixel's strata in this pass; each vertex of the path draws its own (node = its depth).
+TRAZO_HD Vec3 tracePath(const SceneView& scene, Ray ray, const StrataKey& pixelStrata, SampleStream& rng,
+                        uint32_t& rays) {
     const RenderSettings& s = scene.settings;
     PathState path;
     for (uint32_t scatterings = 0;; ++scatterings) {
@@ -126,7 +128,9 @@ TRAZO_HD Vec3 tracePath(const SceneView& scene, Ray ray, SampleStream& rng, uint
         const Bsdf bsdf = pathBsdf(m, sp, entering, path, rng);
         if (hasSmoothLobe(bsdf)) {  // point lights are sampled whatever LightSampling says: no ray finds them
             const bool pointOnly = s.lightSampling == LightSampling::Bsdf;
-            path.radiance += path.beta * sampleOneLight(scene, sp, bsdf, pointOnly, rng, rays);
+            const StrataKey vertexStrata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass,
+                                         kSampleTreeRoot + scatterings};
+            path.radiance += path.beta * sampleOneLight(scene, sp, bsdf, pointOnly, vertexStrata, rng, rays);
         }
 
         const float uLobe = rng.next(), u1 = rng.next(), u2 = rng.next();
