@@ -175,6 +175,8 @@ TEST(ExportController, AScreenshotStoresWhatTheViewerShows) {
     session->scene().settings.exposure = 1.0f;  // the image transform only: nothing to re-render
     session->scene().settings.viewTransform = ViewTransform::Srgb;
     const std::vector<Vec3> image = session->image();
+    ASSERT_TRUE(std::any_of(image.begin(), image.end(), [](const Vec3& p) { return p.x > 0.0f && p.x < 0.5f; }))
+        << "a lit pixel that the exposure and the tone change";
     std::string message;
     // The panel's +0.5 on the scene's +1: 2^1.5, then sRGB, as the display's sRGB tone shows it.
     ASSERT_TRUE(saveSessionImage(*session, (dir / "shot.png").string(), ToneSettings{0.5f, 0}, message)) << message;
