@@ -187,15 +187,15 @@ bool reserveImageMemory(const RenderPlan& plan, bool partial, std::vector<AccumP
     return true;
 }
 
-// The image, resolved into the capacity reserved for it. The backend's accumulation goes first: room for the
-// writer's buffer.
-bool writeImageFile(const std::string& path, const RenderPlan& plan, std::unique_ptr<Backend>& backend,
-                    std::vector<AccumPixel>& accum, std::vector<Vec3>& image) {
+// The image, resolved into the capacity reserved for it and stored through the scene's Exposure and
+// ViewTransform (SPEC §7 Image). The backend's accumulation goes first: room for the writer's buffer.
+bool writeImageFile(const std::string& path, const DisplayTransform& display, const RenderPlan& plan,
+                    std::unique_ptr<Backend>& backend, std::vector<AccumPixel>& accum, std::vector<Vec3>& image) {
     backend.reset();
     for (const AccumPixel& p : accum) image.push_back(p.estimate());  // resolveImage, into the reserved image
     std::vector<AccumPixel>().swap(accum);
     std::string error;
-    if (writeImage(path, (int)plan.width, (int)plan.height, image, error)) return true;
+    if (writeImage(path, (int)plan.width, (int)plan.height, image, error, display)) return true;
     std::fprintf(stderr, "trazo: %s\n", error.c_str());
     return false;
 }
@@ -255,6 +255,10 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
         std::fprintf(stderr, "trazo: %s\n", error.c_str());
         return 1;
     }
+    const SceneSettings& settings = scene.settings;
+    const DisplayTransform display = displayTransform(settings.exposure, settings.viewTransform, settings.integrator);
+    fingerprint.exposure = settings.exposure;  // for the merge's image: the accumulation does not hold them
+    fingerprint.srgb = display.srgb;
     std::vector<AccumPixel> accum;
     std::vector<Vec3> image;
     if (!reserveImageMemory(plan, request.partial, accum, image)) return 1;
@@ -299,7 +303,7 @@ int renderScene(const CommandLine& options, const Scene& scene, RenderStats& sta
     const auto writeStart = std::chrono::steady_clock::now();
     const bool written = request.partial
                              ? writePartial(options, plan, stats, fingerprint, done, signalled, backend, accum)
-                             : writeImageFile(options.output, plan, backend, accum, image);
+                             : writeImageFile(options.output, display, plan, backend, accum, image);
     if (!written) return 1;
     stats.writeSeconds = secondsSince(writeStart);
 

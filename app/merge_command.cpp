@@ -2,6 +2,7 @@
 #include "merge_command.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <new>
 
@@ -105,7 +106,9 @@ int runMerge(const MergeCommandLine& options) {
     }
     if (!options.output.empty()) {
         const std::vector<Vec3> image = resolveImage(result.accum);
-        if (!writeImage(options.output, (int)f.width, (int)f.height, image, error)) {
+        // The scene's Exposure and view transform, as the parts recorded them (SPEC §7 Image).
+        const DisplayTransform display{std::exp2(f.exposure), f.srgb};
+        if (!writeImage(options.output, (int)f.width, (int)f.height, image, error, display)) {
             std::fprintf(stderr, "trazo: merge: %s\n", error.c_str());
             return 1;
         }

@@ -32,6 +32,20 @@ for scene in scene1_area scene7_refract; do
     done
 done
 
+# SPEC §7 Image: scene 1 path-traced at Exposure 1.5 (sRGB, the path integrator's default view): the screenshot
+# stores 2^1.5 × the pixel through the view, as --render does.
+sed '0,/^{/s//{\n    Integrator path\n    Exposure 1.5/' "$scenes/scene1_area.scene" >"$work/exposed.scene"
+for ext in png pfm; do
+    args=(--backend cpu --width 48 --height 32 --seed 11)
+    timeout 120 xvfb-run -a -s "-screen 0 640x480x24" \
+        "$trazo" "$work/exposed.scene" "${args[@]}" --frames 5 --screenshot "$work/viewer.$ext" >"$work/viewer.log" 2>&1 \
+        || { cat "$work/viewer.log"; fail "exposed: the viewer failed"; }
+    "$trazo" --render "$work/exposed.scene" "${args[@]}" --spp 5 --blocks 1 -o "$work/headless.$ext" --quiet \
+        || fail "exposed: the headless render failed"
+    cmp "$work/viewer.$ext" "$work/headless.$ext" || fail "exposed: the viewer's .$ext differs from --render's"
+    echo "ok: scene1_area path, Exposure 1.5 .$ext: viewer screenshot == headless render"
+done
+
 # No display: one line, a hint to --render, status 1, and no crash.
 env -u DISPLAY -u WAYLAND_DISPLAY "$trazo" "$scenes/scene1_area.scene" >"$work/out.txt" 2>"$work/err.txt"
 status=$?

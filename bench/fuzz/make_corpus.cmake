@@ -6,7 +6,8 @@
 #   corpus/texture/  scenes/assets/* images of at most MAX_SEED_BYTES + tiny images of every accepted format
 #                    (TEXTURE_SEEDS, written by make_texture_seeds) + seeds/texture/*
 #   scene_root/      what the seed scenes name, small: every scenes/*.csg, assets/bunny.obj and assets/head.obj
-#                    as tiny meshes, assets/head_*.png as a 4 × 3 PNG
+#                    as tiny meshes, assets/head_*.png as a 4 × 3 PNG, assets/sky.exr and assets/sky.png (the
+#                    environment maps of seeds/scene/path_*.scene) as tiny images
 # Inputs: SOURCE_DIR (the repository), OUT_DIR (bench/fuzz in the build), TEXTURE_SEEDS (a folder).
 foreach(var SOURCE_DIR OUT_DIR TEXTURE_SEEDS)
   if(NOT DEFINED ${var})
@@ -47,6 +48,9 @@ configure_file(${SEEDS}/obj/tetra_negative.obj ${ROOT}/assets/bunny.obj COPYONLY
 configure_file(${SEEDS}/obj/cube_all_attributes.obj ${ROOT}/assets/head.obj COPYONLY)
 configure_file(${TEXTURE_SEEDS}/rgb.png ${ROOT}/assets/head_diffuse.png COPYONLY)
 configure_file(${TEXTURE_SEEDS}/rgb.png ${ROOT}/assets/head_normal.png COPYONLY)
+# The environment maps the SPEC §7 seeds name: a float image and an 8-bit one.
+configure_file(${TEXTURE_SEEDS}/zip.exr ${ROOT}/assets/sky.exr COPYONLY)
+configure_file(${TEXTURE_SEEDS}/rgb.png ${ROOT}/assets/sky.png COPYONLY)
 
 foreach(h scene csg obj texture)
   file(GLOB got ${CORPUS}/${h}/*)

@@ -7,6 +7,7 @@
 
 #include "accel/bvh_build.h"
 #include "accel/collapse_bvh.h"
+#include "core/srgb.h"
 #include "objects/visit_object.h"
 
 #include <algorithm>
@@ -61,21 +62,29 @@ void warnIfTexturesIgnored(const Scene& scene, const Host& object, const char* k
                                        scene.materials[object.material].name + "' are ignored for it");
 }
 
-// Texels of the textures that materials use, each stored once, and the materials' indices remapped to them.
+// Texels of the textures that materials use, each stored once per decoding, and the materials' indices remapped
+// to them. Under `Integrator path` an 8-bit colour texture is decoded from sRGB (SPEC §7 Surfaces); normal maps
+// and float images are used as stored, so an 8-bit image that is both a normal map and a colour gets two copies.
 void flattenTextures(const Scene& scene, SceneArrays& out) {
-    std::vector<int32_t> remap(scene.textures.size(), -1);
-    auto place = [&](int32_t& index) {
+    const bool decodeColours = scene.settings.integrator == IntegratorKind::Path;
+    std::vector<int32_t> remap(2 * scene.textures.size(), -1);  // [2·index + decoded]
+    auto place = [&](int32_t& index, bool colour) {
         if (index < 0) return;
-        if (remap[index] < 0) {
-            const TextureImage& image = *scene.textures[index].image;
-            remap[index] = (int32_t)out.textures.size();
+        const TextureImage& image = *scene.textures[index].image;
+        const bool decoded = colour && decodeColours && image.eightBit;
+        int32_t& placed = remap[2 * size_t(index) + decoded];
+        if (placed < 0) {
+            placed = (int32_t)out.textures.size();
             out.textures.push_back({(uint32_t)out.texels.size(), (uint32_t)image.width, (uint32_t)image.height});
             out.texels.insert(out.texels.end(), image.texels.begin(), image.texels.end());
+            if (decoded)
+                for (size_t t = out.texels.size() - image.texels.size(); t < out.texels.size(); ++t)
+                    out.texels[t] = linearFromSrgb(out.texels[t]);
         }
-        index = remap[index];
+        index = placed;
     };
     for (MaterialData& m : out.materials)
-        for (int32_t& texture : m.textures) place(texture);
+        for (int slot = 0; slot < kTextureSlotCount; ++slot) place(m.textures[slot], slot != kNormalTexture);
 }
 
 // The object's bounds, padded: the shapes' own tests are exact, the box test must never be the one that misses.

@@ -176,6 +176,75 @@ TEST(Flatten, MovingOneMeshRebuildsOnlyIt) {
     EXPECT_EQ(describeArrays(changedArrays(before.arrays, after.arrays) & kMeshArrays), "meshNodes triangles");
 }
 
+// SPEC §7 Surfaces: under `Integrator path` 8-bit colour textures are decoded from sRGB; normal maps and float
+// images are used as stored, and the thesis's model takes every texture as stored.
+struct TexturedScene {
+    Scene scene;
+    static constexpr float kEncoded = 188.0f / 255.0f;
+    // ((188/255 + 0.055) / 1.055)^2.4, worked by hand: the 8-bit texel that stores about 0.5 in sRGB.
+    static constexpr float kDecoded = 0.502886f;
+
+    explicit TexturedScene(IntegratorKind integrator) {
+        scene.settings.integrator = integrator;
+        auto eightBit = std::make_shared<TextureImage>();
+        eightBit->width = 2;
+        eightBit->height = 1;
+        eightBit->texels = {Vec3(kEncoded), Vec3(0.0f, 0.5f, 1.0f)};
+        eightBit->eightBit = true;
+        auto floats = std::make_shared<TextureImage>(*eightBit);
+        floats->eightBit = false;  // an EXR or PFM: radiance-like values, never decoded
+        scene.textures = {Texture{"bytes", "bytes.png", eightBit, {}}, Texture{"floats", "floats.exr", floats, {}}};
+        Material both;  // the 8-bit image as a colour and as a normal map
+        both.name = "both";
+        both.textures[kDiffuseTexture] = 0;
+        both.textures[kNormalTexture] = 0;
+        Material others;  // the same image in the other colour slots, the float image as a colour
+        others.name = "others";
+        others.textures[kSpecularTexture] = 0;
+        others.textures[kEmissiveTexture] = 0;
+        others.textures[kDiffuseTexture] = 1;
+        scene.materials = {both, others};
+        scene.spheres.push_back(Sphere{0, Vec3(0), 1.0f, {}});
+        scene.spheres.push_back(Sphere{1, Vec3(3, 0, 0), 1.0f, {}});
+    }
+};
+
+// The first texel of the texture in `slot` of material `m`.
+Vec3 firstTexel(const SceneArrays& a, uint32_t m, int slot) {
+    const int32_t t = a.materials[m].textures[slot];
+    EXPECT_GE(t, 0);
+    return t < 0 ? Vec3(-1.0f) : a.texels[a.textures[size_t(t)].offset];
+}
+
+TEST(Flatten, PathDecodesEightBitColourTexturesFromSrgb) {
+    const SceneArrays a = flatten(TexturedScene(IntegratorKind::Path).scene).arrays;
+    EXPECT_NEAR(firstTexel(a, 0, kDiffuseTexture).x, TexturedScene::kDecoded, 1e-5f);
+    for (int slot : {kSpecularTexture, kEmissiveTexture})
+        EXPECT_NEAR(firstTexel(a, 1, slot).x, TexturedScene::kDecoded, 1e-5f);
+    // The other texel: 0 stays 0, 1 stays 1, 0.5 decodes to 0.214 (the channels are decoded one by one).
+    const int32_t decoded = a.materials[0].textures[kDiffuseTexture];
+    const Vec3 second = a.texels[a.textures[size_t(decoded)].offset + 1];
+    EXPECT_EQ(second.x, 0.0f);
+    EXPECT_NEAR(second.y, 0.21404f, 1e-5f);
+    EXPECT_NEAR(second.z, 1.0f, 1e-6f);
+    // The normal map and the float image are untouched: the 8-bit image is stored twice, the float one once.
+    EXPECT_EQ(firstTexel(a, 0, kNormalTexture).x, TexturedScene::kEncoded);
+    EXPECT_EQ(firstTexel(a, 1, kDiffuseTexture).x, TexturedScene::kEncoded);
+    EXPECT_NE(a.materials[0].textures[kNormalTexture], decoded);
+    EXPECT_EQ(a.materials[1].textures[kSpecularTexture], decoded);  // one decoded copy shared by the colour slots
+    EXPECT_EQ(a.textures.size(), 3u);
+    EXPECT_EQ(a.texels.size(), 6u);
+}
+
+TEST(Flatten, ThesisKeepsEveryTextureAsStored) {
+    const SceneArrays a = flatten(TexturedScene(IntegratorKind::Thesis).scene).arrays;
+    for (int slot : {kDiffuseTexture, kNormalTexture}) EXPECT_EQ(firstTexel(a, 0, slot).x, TexturedScene::kEncoded);
+    for (int slot : {kSpecularTexture, kEmissiveTexture, kDiffuseTexture})
+        EXPECT_EQ(firstTexel(a, 1, slot).x, TexturedScene::kEncoded);
+    EXPECT_EQ(a.materials[0].textures[kNormalTexture], a.materials[0].textures[kDiffuseTexture]);  // one copy
+    EXPECT_EQ(a.textures.size(), 2u);
+}
+
 TEST(ArrayMask, NamesFollowTheArrayList) {
     EXPECT_EQ(describeArrays(kNoArrays), "none");
     EXPECT_EQ(describeArrays(maskOf(SceneArray::spheres) | maskOf(SceneArray::topNodes) | maskOf(SceneArray::values)),

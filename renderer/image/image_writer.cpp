@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <system_error>
 
 #include "io/atomic_file.h"
@@ -56,8 +57,17 @@ uint8_t toByte(float c) {
     return static_cast<uint8_t>(std::floor(255.0 * static_cast<double>(c) + 0.5));
 }
 
-// FreeImage's scanline 0 is the bottom row; rgbTopDown's row 0 is the top.
-FIBITMAP* makeBitmap(const FormatInfo& info, int width, int height, const std::vector<Vec3>& rgbTopDown) {
+// 2^Exposure × x for a float file. A finite pixel that the exposure takes past float's range is stored as the
+// largest float of its sign, not inf (docs/LIMITS.md: no pixel is Inf); with scale 1 this is x itself.
+float exposed(float scale, float x) {
+    const float y = scale * x;
+    return std::isinf(y) && std::isfinite(x) ? std::copysign(std::numeric_limits<float>::max(), y) : y;
+}
+
+// FreeImage's scanline 0 is the bottom row; rgbTopDown's row 0 is the top. Float formats get the exposed value,
+// 8-bit ones its display encoding (SPEC §7 Image); the identity transform changes no value.
+FIBITMAP* makeBitmap(const FormatInfo& info, int width, int height, const std::vector<Vec3>& rgbTopDown,
+                     const DisplayTransform& display) {
     FIBITMAP* bitmap = info.isFloat ? FreeImage_AllocateT(FIT_RGBF, width, height)
                                     : FreeImage_Allocate(width, height, 24);
     if (!bitmap) return nullptr;
@@ -66,13 +76,14 @@ FIBITMAP* makeBitmap(const FormatInfo& info, int width, int height, const std::v
         BYTE* line = FreeImage_GetScanLine(bitmap, info.flipRows ? y : height - 1 - y);
         if (info.isFloat) {
             auto* dst = reinterpret_cast<FIRGBF*>(line);
-            for (int x = 0; x < width; ++x) dst[x] = {src[x].x, src[x].y, src[x].z};
+            const float k = display.scale;
+            for (int x = 0; x < width; ++x) dst[x] = {exposed(k, src[x].x), exposed(k, src[x].y), exposed(k, src[x].z)};
         } else {
             for (int x = 0; x < width; ++x) {
                 BYTE* px = line + 3 * x;  // byte order is platform-defined: BGR on little-endian
-                px[FI_RGBA_RED] = toByte(src[x].x);
-                px[FI_RGBA_GREEN] = toByte(src[x].y);
-                px[FI_RGBA_BLUE] = toByte(src[x].z);
+                px[FI_RGBA_RED] = toByte(display.encode(src[x].x));
+                px[FI_RGBA_GREEN] = toByte(display.encode(src[x].y));
+                px[FI_RGBA_BLUE] = toByte(display.encode(src[x].z));
             }
         }
     }
@@ -118,13 +129,15 @@ bool imageFormatFromPath(const std::string& path, ImageFormat& format) {
     return true;
 }
 
+bool storesFloats(ImageFormat format) { return formatInfo(format).isFloat; }
+
 std::string unknownImageFormatReason(const std::string& path) {
     return "'" + path + "': unknown image extension '" + fs::path(path).extension().string() +
            "' (use .png, .bmp, .jpg, .jpeg, .tga, .exr, .hdr or .pfm)";
 }
 
 bool writeImage(const std::string& path, int width, int height, const std::vector<Vec3>& rgbTopDown,
-                std::string& error) {
+                std::string& error, const DisplayTransform& display) {
     ImageFormat format;
     if (!imageFormatFromPath(path, format)) {
         error = "cannot write " + unknownImageFormatReason(path);
@@ -146,7 +159,7 @@ bool writeImage(const std::string& path, int width, int height, const std::vecto
 
     const FreeImageLock freeImage;
     const FormatInfo info = formatInfo(format);
-    FIBITMAP* bitmap = makeBitmap(info, width, height, rgbTopDown);
+    FIBITMAP* bitmap = makeBitmap(info, width, height, rgbTopDown, display);
     if (!bitmap) {
         error = "cannot write '" + path + "': out of memory for a " + std::to_string(width) + "x" +
                 std::to_string(height) + " image";

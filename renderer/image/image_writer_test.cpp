@@ -325,6 +325,89 @@ TEST(ImageWriterFormat, RecognisesExtensionsCaseInsensitively) {
     }
 }
 
+// SPEC §7 Image: 2^Exposure scales every output, sRGB's transfer function encodes only the 8-bit ones.
+std::string writeDisplayed(const fs::path& path, int width, int height, const std::vector<Vec3>& image,
+                           const DisplayTransform& display) {
+    std::string error;
+    return writeImage(path.string(), width, height, image, error, display) ? "" : "failed: " + error;
+}
+
+TEST(ImageWriterDisplay, SrgbStoresKnownBytes) {
+    // Worked by hand: E(0.5) = 1.055·0.5^(1/2.4) − 0.055 = 0.73536, ·255 = 187.52 → 188; E(0.002) = 12.92·0.002
+    // (the linear toe), ·255 = 6.59 → 7; E(0.2) = 0.48450, ·255 = 123.55 → 124; clamped and NaN as in §5.
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const std::vector<Vec3> image = {{0.5f, 0.002f, 0.2f}, {1.0f, 2.0f, 0.0f}, {nan, -1.0f, 0.5f}};
+    const std::vector<Rgb8> expected = {{188, 7, 124}, {255, 255, 0}, {0, 0, 188}};
+    const fs::path path = freshDir("srgb") / "out.png";
+    ASSERT_EQ(writeDisplayed(path, 3, 1, image, DisplayTransform{1.0f, true}), "");
+    EXPECT_EQ(readBytes(path, 3, 1), expected);
+    // Float files store the value linear: the transfer function is for 8-bit outputs only.
+    const fs::path exr = path.parent_path() / "out.exr";
+    ASSERT_EQ(writeDisplayed(exr, 3, 1, image, DisplayTransform{1.0f, true}), "");
+    const std::vector<Vec3> floats = readFloats(exr, 3, 1);
+    ASSERT_EQ(floats.size(), 3u);
+    EXPECT_EQ(floats[0].x, 0.5f);
+    EXPECT_EQ(floats[0].z, 0.2f);
+}
+
+TEST(ImageWriterDisplay, OneStopOfExposureDoublesEveryOutput) {
+    const DisplayTransform plusOne = displayTransform(1.0f, ViewTransform::Linear, IntegratorKind::Path);
+    ASSERT_EQ(plusOne.scale, 2.0f);
+    // 8-bit: 0.25 → 0.5 → 127.5 → 128; 0.1 → 0.2 → 51; 0.6 → 1.2, clamped to 255. Linear: no gamma.
+    const std::vector<Vec3> image = {{0.25f, 0.1f, 0.6f}, {0.3f, 1e-3f, 0.0f}};
+    const fs::path dir = freshDir("exposure");
+    ASSERT_EQ(writeDisplayed(dir / "out.png", 2, 1, image, plusOne), "");
+    EXPECT_EQ(readBytes(dir / "out.png", 2, 1), (std::vector<Rgb8>{{128, 51, 255}, {153, 1, 0}}));
+    // Float files: exactly twice the pixel (a power of two scales floats exactly).
+    for (const char* name : {"out.exr", "out.pfm"}) {
+        ASSERT_EQ(writeDisplayed(dir / name, 2, 1, image, plusOne), "");
+        const std::vector<Vec3> got = readFloatFile(dir / name, 2, 1);
+        ASSERT_EQ(got.size(), image.size()) << name;
+        for (size_t i = 0; i < got.size(); ++i)
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(got[i][c], 2.0f * image[i][c]) << name << " pixel " << i;
+    }
+    // Exposure −1 halves: 0.25 → 0.125 → 31.875 → 32.
+    ASSERT_EQ(writeDisplayed(dir / "half.png", 2, 1, image,
+                             displayTransform(-1.0f, ViewTransform::Linear, IntegratorKind::Thesis)), "");
+    EXPECT_EQ(readBytes(dir / "half.png", 2, 1)[0][0], 32);
+}
+
+TEST(ImageWriterDisplay, AnExposureThatOverflowsStoresTheLargestFloatNotInf) {
+    const float big = 1e30f, max = std::numeric_limits<float>::max();
+    const std::vector<Vec3> image = {{big, -big, 1.0f}};
+    const DisplayTransform brightest = displayTransform(64.0f, ViewTransform::Linear, IntegratorKind::Path);
+    const fs::path dir = freshDir("overflow");
+    for (const char* name : {"out.exr", "out.pfm"}) {
+        ASSERT_EQ(writeDisplayed(dir / name, 1, 1, image, brightest), "");
+        const std::vector<Vec3> got = readFloatFile(dir / name, 1, 1);
+        ASSERT_EQ(got.size(), 1u) << name;
+        EXPECT_EQ(got[0].x, max) << name;
+        EXPECT_EQ(got[0].y, -max) << name;
+        EXPECT_EQ(got[0].z, 18446744073709551616.0f) << name;  // 2^64
+    }
+}
+
+TEST(ImageWriterDisplay, LinearAtZeroStopsIsByteIdenticalToTheDefault) {
+    // The byte cases (NaN, ±inf, halves, every k/255) in every format: a scene that names neither Exposure
+    // nor ViewTransform under thesis, or `linear` and 0 under path, writes the very file it wrote before.
+    const int width = 23, height = 24;
+    std::vector<Vec3> image;
+    std::vector<Rgb8> expected;
+    makeByteImage(width, height, image, expected);
+    const fs::path dir = freshDir("identity");
+    for (const char* ext : {"png", "bmp", "jpg", "tga", "exr", "hdr", "pfm"}) {
+        const fs::path before = dir / (std::string("default.") + ext);
+        ASSERT_EQ(writeError(before, width, height, image), "");
+        for (const DisplayTransform& same : {displayTransform(0.0f, ViewTransform::Auto, IntegratorKind::Thesis),
+                                             displayTransform(0.0f, ViewTransform::Linear, IntegratorKind::Path)}) {
+            ASSERT_TRUE(same.identity());
+            const fs::path after = dir / (std::string("explicit.") + ext);
+            ASSERT_EQ(writeDisplayed(after, width, height, image, same), "");
+            EXPECT_EQ(test::readFileText(after.string()), test::readFileText(before.string())) << ext;
+        }
+    }
+}
+
 TEST(ImageWriterFailure, UnknownExtensionCreatesNothing) {
     const fs::path dir = freshDir("unknown_ext");
     std::string error;

@@ -4,7 +4,9 @@
 #include <bit>
 #include <cerrno>
 #include <cinttypes>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 
@@ -14,6 +16,7 @@
 #include "io/atomic_file.h"
 #include "io/text_file.h"
 #include "render/xxhash64.h"
+#include "scene/param_check.h"
 
 namespace trazo {
 
@@ -88,6 +91,13 @@ uint64_t dataBytes(uint64_t pixels, bool uniform) {
     return uniform ? 2 * sizeof(double) + pixels * 6 * sizeof(double) : pixels * sizeof(AccumPixel);
 }
 
+// "exposure=E view=linear|srgb", E with the digits a float needs to read back exactly.
+std::string formatDisplay(const Fingerprint& f) {
+    char exposure[32];
+    std::snprintf(exposure, sizeof exposure, "%.9g", double(f.exposure));
+    return std::string("exposure=") + exposure + (f.srgb ? " view=srgb" : " view=linear");
+}
+
 std::string formatHeader(const PartialHeader& h, bool uniform, uint64_t data) {
     const Fingerprint& f = h.fingerprint;
     char seconds[40];
@@ -101,6 +111,7 @@ std::string formatHeader(const PartialHeader& h, bool uniform, uint64_t data) {
     text += "seed: " + std::to_string(f.seed) + "\n";
     text += "blocks: " + escape(f.blocks) + "\n";
     text += "settings: full-cycle=" + std::to_string(f.fullCycle) + "\n";
+    if (f.exposure != 0.0f || f.srgb) text += "display: " + formatDisplay(f) + "\n";
     text += "passes: " + formatRanges(h.passes) + "\n";
     text += "requested: " + formatRange(h.requested) + "\n";
     text += "parts: " + std::to_string(h.parts) + "\n";
@@ -118,6 +129,18 @@ bool writeAll(FILE* f, const void* data, size_t size, Xxhash64& hash) {
 }
 
 // --- reading -----------------------------------------------------------------------------------------------
+
+// formatDisplay's "exposure=E view=linear|srgb", E finite and within SPEC §7's ±64 stops.
+bool parseDisplay(const std::string& text, Fingerprint& f) {
+    const size_t space = text.find(' ');
+    if (text.rfind("exposure=", 0) != 0 || space == std::string::npos) return false;
+    const std::string stops = text.substr(9, space - 9), view = text.substr(space + 1);
+    char* end = nullptr;
+    f.exposure = std::strtof(stops.c_str(), &end);
+    f.srgb = view == "view=srgb";
+    return !stops.empty() && *end == '\0' && std::fabs(f.exposure) <= kMaxStops &&
+           (f.srgb || view == "view=linear");
+}
 
 bool parseU64(const std::string& text, uint64_t& out, int base = 10) {
     if (text.empty() || text.size() > 20) return false;
@@ -217,6 +240,7 @@ bool parseHeader(const std::string& text, ParsedHeader& out, std::string& why) {
         } else if (key == "seed") ok = parseU32(value, f.seed);
         else if (key == "blocks") f.blocks = unescape(value);
         else if (key == "settings") ok = value.rfind("full-cycle=", 0) == 0 && parseU32(value.substr(11), f.fullCycle);
+        else if (key == "display") ok = parseDisplay(value, f);
         else if (key == "passes") ok = parseRanges(value, h.passes);
         else if (key == "requested") {
             std::string ignored;
@@ -343,6 +367,8 @@ std::string fingerprintDifference(const Fingerprint& a, const Fingerprint& b) {
     if (a.seed != b.seed) return "seed (" + std::to_string(a.seed) + " vs " + std::to_string(b.seed) + ")";
     if (a.blocks != b.blocks) return "blocks (" + a.blocks + " vs " + b.blocks + ")";
     if (a.version != b.version) return "version (" + a.version + " vs " + b.version + ")";
+    if (a.exposure != b.exposure || a.srgb != b.srgb)
+        return "display (" + formatDisplay(a) + " vs " + formatDisplay(b) + ")";
     return "";
 }
 

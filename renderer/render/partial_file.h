@@ -33,6 +33,11 @@ struct Fingerprint {
     std::string blocks;               // describeBlocks of the blocks the passes took (auto resolved)
     uint32_t fullCycle = 0;           // settings: fullCyclePasses, which sets the halves and strata windows
     std::string version;              // "trazo X.Y.Z"
+    // SPEC §7's image transform, which the merge's image needs and the accumulation lacks: Exposure in stops and
+    // the view transform resolved (auto → linear or srgb). In the header only when not 0 and linear, so files
+    // of scenes without them are as before.
+    float exposure = 0.0f;
+    bool srgb = false;
 };
 
 // Hashes the scene file and every asset `scene` read (scenePath, sceneHash, assets); the caller sets the rest.
@@ -40,7 +45,7 @@ struct Fingerprint {
 bool hashSceneFiles(const Scene& scene, Fingerprint& out, std::string& error);
 
 // "" when a and b agree; otherwise the first field that differs and both values, e.g. "seed (0 vs 7)". Fields:
-// scene, assets, settings, size, seed, blocks, version.
+// scene, assets, settings, size, seed, blocks, version, display.
 std::string fingerprintDifference(const Fingerprint& a, const Fingerprint& b);
 
 struct PartialHeader {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -80,6 +81,37 @@ TEST(PartialFile, ReadsBackBitForBitWithUniformAndPerPixelCounts) {
         expectSameHeader(header, fullHeader);
         ASSERT_EQ(readAccum.size(), accum.size());
         EXPECT_EQ(std::memcmp(readAccum.data(), accum.data(), accum.size() * sizeof(AccumPixel)), 0);
+    }
+}
+
+// SPEC §7's image transform rides in a `display:` line only where it is not the identity; a bad one is refused.
+TEST(PartialFile, TheDisplayLineReadsBackAndIsLeftOutWhenItIsTheIdentity) {
+    const std::string path = tempPath("display.part");
+    PartialHeader header = sampleHeader(2, 1);
+    std::string error;
+    ASSERT_TRUE(writePartialFile(path, header, sampleAccum(2, true), error)) << error;
+    EXPECT_EQ(test::readFileText(path).find("display:"), std::string::npos);
+    header.fingerprint.exposure = -2.3f;  // not a short decimal in binary: written with a float's 9 digits
+    header.fingerprint.srgb = true;
+    ASSERT_TRUE(writePartialFile(path, header, sampleAccum(2, true), error)) << error;
+    const std::string text = test::readFileText(path);
+    EXPECT_NE(text.find("\nsettings: full-cycle=100\ndisplay: exposure=-2.29999995 view=srgb\n"), std::string::npos)
+        << text.substr(0, 400);
+    PartialHeader back;
+    ASSERT_TRUE(readPartialHeader(path, back, error)) << error;
+    EXPECT_EQ(back.fingerprint.exposure, -2.3f);
+    EXPECT_TRUE(back.fingerprint.srgb);
+    expectSameHeader(header, back);
+    // A header that names a view it does not know, or an exposure past ±64 stops, is not a trazo partial file's.
+    for (const char* bad : {"exposure=-2.29999995 view=gamma", "exposure=65 view=srgb", "exposure=nan view=srgb",
+                            "exposure= view=srgb", "view=srgb"}) {
+        std::string damaged = text;
+        const size_t at = damaged.find("exposure=-2.29999995 view=srgb");
+        damaged.replace(at, std::strlen("exposure=-2.29999995 view=srgb"), bad);
+        const std::string badPath = tempPath("display_bad.part");
+        std::ofstream(badPath, std::ios::binary) << damaged;
+        EXPECT_FALSE(readPartialHeader(badPath, back, error)) << bad;
+        EXPECT_NE(error.find("bad value"), std::string::npos) << bad << ": " << error;
     }
 }
 
@@ -164,6 +196,8 @@ TEST(PartialFile, FingerprintNamesTheFieldThatDiffers) {
         {"seed", [](Fingerprint& f) { f.seed = 8; }},
         {"blocks", [](Fingerprint& f) { f.blocks = "whole"; }},
         {"version", [](Fingerprint& f) { f.version = "trazo 0.2.0"; }},
+        {"display", [](Fingerprint& f) { f.exposure = 1.0f; }},
+        {"display", [](Fingerprint& f) { f.srgb = true; }},
     };
     for (const auto& [field, edit] : edits) {
         Fingerprint changed = base;

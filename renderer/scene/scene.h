@@ -47,6 +47,7 @@ struct TextureImage {
     int width = 0;
     int height = 0;
     std::vector<Vec3> texels;  // row 0 = bottom row of the image (uv origin bottom-left)
+    bool eightBit = false;     // 8-bit channels (k/255): decoded from sRGB as a colour texture under path (SPEC §7)
 };
 
 struct SceneSettings {

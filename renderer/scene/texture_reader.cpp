@@ -101,6 +101,7 @@ std::shared_ptr<const TextureImage> readTextureImage(const std::string& path, co
         return nullptr;
     }
     copyTexels(converted.get(), isFloat, *image);
+    image->eightBit = !isFloat;
     return image;
 }
 

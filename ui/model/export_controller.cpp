@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "image/image_writer.h"
+#include "model/setting_effects.h"
 #include "scene/scene_writer.h"
 
 namespace trazo {
@@ -33,7 +34,8 @@ std::string editedScenePath(const std::string& scenePath) {
 
 bool saveSessionImage(ViewerSession& session, const std::string& path, std::string& message) {
     std::string error;
-    if (!writeImage(path, int(session.width()), int(session.height()), session.image(), error)) {
+    if (!writeImage(path, int(session.width()), int(session.height()), session.image(), error,
+                    displayTransformOf(session.scene()))) {
         message = error;
         return false;
     }

@@ -17,7 +17,9 @@ std::string timestampedName(const std::string& extension, std::time_t when, cons
 // SCENE-edited.scene beside SCENE.
 std::string editedScenePath(const std::string& scenePath);
 
-// Writes the session's image to `path`: "saved PATH (N passes)" in `message`, or writeImage's reason.
+// Writes the session's image to `path` as the viewer shows it (SPEC §7 Image: the scene's Exposure and
+// ViewTransform, displayTransformOf; 8-bit files: the bytes shown; float files: the exposed value, linear):
+// "saved PATH (N passes)" in `message`, or writeImage's reason.
 bool saveSessionImage(ViewerSession& session, const std::string& path, std::string& message);
 
 // Acts on the Export panel's fields (PanelState::screenshotPath, scenePath, status).

@@ -1,9 +1,14 @@
 // Tests of the viewer's export policy without a window: timestamped names that never overwrite, a default name
-// used once, a typed name kept, the edited scene beside the original, and the status lines.
+// used once, a typed name kept, the edited scene beside the original, the status lines, and a screenshot that
+// stores what the viewer shows (SPEC §7 Image).
 #include "model/export_controller.h"
 
+#include <FreeImage.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -121,6 +126,57 @@ TEST(ExportController, SavesTheSceneItIsGiven) {
     const Scene back = readSceneFile((dir / "a-edited.scene").string(), diags);
     EXPECT_FALSE(diags.hasErrors());
     EXPECT_EQ(back.materials.size(), session->scene().materials.size());
+}
+
+// Top-down bytes of a 24-bit file, R, G, B.
+std::vector<std::array<int, 3>> readBytes(const std::string& path) {
+    std::vector<std::array<int, 3>> pixels;
+    FIBITMAP* bitmap = FreeImage_Load(FreeImage_GetFileType(path.c_str()), path.c_str());
+    EXPECT_NE(bitmap, nullptr) << path;
+    if (!bitmap) return pixels;
+    const int w = int(FreeImage_GetWidth(bitmap)), h = int(FreeImage_GetHeight(bitmap));
+    for (int y = h - 1; y >= 0; --y) {
+        const BYTE* line = FreeImage_GetScanLine(bitmap, y);
+        for (int x = 0; x < w; ++x)
+            pixels.push_back({line[3 * x + FI_RGBA_RED], line[3 * x + FI_RGBA_GREEN], line[3 * x + FI_RGBA_BLUE]});
+    }
+    FreeImage_Unload(bitmap);
+    return pixels;
+}
+
+std::vector<std::array<int, 3>> expectedBytes(const std::vector<Vec3>& image, float (*tone)(float)) {
+    std::vector<std::array<int, 3>> bytes;
+    const auto byte = [&](float x) { return int(std::floor(255.0 * double(tone(x)) + 0.5)); };
+    for (const Vec3& p : image) bytes.push_back({byte(p.x), byte(p.y), byte(p.z)});
+    return bytes;
+}
+
+TEST(ExportController, AScreenshotStoresWhatTheViewerShows) {
+    const fs::path dir = freshDir("export_tone");
+    const std::unique_ptr<ViewerSession> session = smallSession();
+    session->renderPasses(1);
+    session->scene().settings.exposure = 1.5f;  // the image transform only: nothing to re-render
+    session->scene().settings.viewTransform = ViewTransform::Srgb;
+    const std::vector<Vec3> image = session->image();
+    ASSERT_TRUE(std::any_of(image.begin(), image.end(), [](const Vec3& p) { return p.x > 0.0f && p.x < 0.5f; }))
+        << "a lit pixel that the exposure and the tone change";
+    std::string message;
+    // 2^1.5, then sRGB, as the display shows it.
+    ASSERT_TRUE(saveSessionImage(*session, (dir / "shot.png").string(), message)) << message;
+    EXPECT_EQ(readBytes((dir / "shot.png").string()), expectedBytes(image, [](float x) {
+                  return DisplayTransform{std::exp2(1.5f), true}.encode(x);
+              }));
+    // A float file stores the exposed value, linear.
+    ASSERT_TRUE(saveSessionImage(*session, (dir / "shot.exr").string(), message));
+    FIBITMAP* exr = FreeImage_Load(FIF_EXR, (dir / "shot.exr").c_str());
+    ASSERT_NE(exr, nullptr);
+    const int w = int(FreeImage_GetWidth(exr)), h = int(FreeImage_GetHeight(exr));
+    ASSERT_EQ(size_t(w) * size_t(h), image.size());
+    for (int y = 0; y < h; ++y) {
+        const auto* line = reinterpret_cast<const FIRGBF*>(FreeImage_GetScanLine(exr, h - 1 - y));
+        for (int x = 0; x < w; ++x) EXPECT_EQ(line[x].red, std::exp2(1.5f) * image[size_t(y) * w + x].x);
+    }
+    FreeImage_Unload(exr);
 }
 
 }  // namespace
