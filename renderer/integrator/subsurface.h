@@ -36,10 +36,11 @@ TRAZO_HD Vec3 freePathDensity(Vec3 d, float s, bool collision) {
 // that misses its paths. The densities are kept relative (divided by their largest) so a long walk cannot
 // underflow them. A channel of mean free path 0 among others scatters without end at P: the bound of 256
 // scatterings makes its S 0, so it takes no part (nor is it drawn).
-// atScattering(point, weight), where given, is called at each scattering inside with the walk's weight there
-// (Kd^k with the channels' MIS weights, the scattering's albedo included): the path tracer's light samples.
+// atScattering(point, weight, stack), where given, is called at each scattering inside with the walk's weight
+// there (Kd^k with the channels' MIS weights, the scattering's albedo included) and the walk's traversal stack,
+// free between its queries: the path tracer's light samples.
 struct NoScatteringVisit {
-    TRAZO_HD void operator()(Vec3, Vec3) const {}
+    TRAZO_HD void operator()(Vec3, Vec3, ClosestStack&) const {}
 };
 
 template <class AtScattering = NoScatteringVisit>
@@ -92,10 +93,10 @@ TRAZO_HD bool subsurfaceWalk(const SceneView& scene, const ObjectRef& object, co
         albedoPower *= m.diffuse;
         const Vec3 at = pointAt(segment, s);
         if (grey) {
-            atScattering(at, albedoPower);
+            atScattering(at, albedoPower, stack);
         } else {
             const float mean = (density.x + density.y + density.z) / float(channels);
-            atScattering(at, mean > 0.0f ? albedoPower * (density / mean) : Vec3(0.0f));
+            atScattering(at, mean > 0.0f ? albedoPower * (density / mean) : Vec3(0.0f), stack);
         }
         const float v1 = rng.next();
         segment = Ray{at, sampleIsotropic(v1, rng.next())};

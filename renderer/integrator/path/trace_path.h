@@ -88,7 +88,7 @@ TRAZO_HD Bsdf pathBsdf(const MaterialData& m, const ShadingPoint& sp, bool enter
 // light sample, through the medium to its surface (each channel's transmittance e^(−t/d_c)) and on to the light,
 // with the isotropic phase function 1/4π. The walk's own exits then find no light that this samples.
 TRAZO_HD Vec3 lightInsideMedium(const SceneView& scene, uint32_t object, Vec3 at, Vec3 d, bool pointOnly,
-                                const StrataKey& strata, SampleStream& rng, uint32_t& rays) {
+                                const StrataKey& strata, SampleStream& rng, ClosestStack& stack, uint32_t& rays) {
     const uint32_t count = pointOnly ? scene.pointLights.count : sampledLightCount(scene);
     const float u = rng.next(), u1 = rng.next(), u2 = rng.next();
     if (count == 0) return Vec3(0.0f);
@@ -100,7 +100,7 @@ TRAZO_HD Vec3 lightInsideMedium(const SceneView& scene, uint32_t object, Vec3 at
     SurfaceHit surface;
     ShapeHit shape;
     ++rays;
-    if (!intersectObject(scene, scene.objects[object], toLight, ls.distance, shape)) return Vec3(0.0f);
+    if (!intersectObject(scene, scene.objects[object], toLight, ls.distance, stack, shape)) return Vec3(0.0f);
     surface = SurfaceHit{shape.t, shape.normal, object, 0, shape.triangle, shape.b1, shape.b2};
     MaterialData m;
     const ShadingPoint exit = shadingPointAt(scene, toLight, surface, m);
@@ -122,9 +122,10 @@ TRAZO_HD bool leaveAfterWalk(const SceneView& scene, const SurfaceHit& hit, cons
     const bool pointOnly = scene.settings.lightSampling == LightSampling::Bsdf;
     bool scattered = false;
     Vec3 inside(0.0f);
-    auto atScattering = [&](Vec3 at, Vec3 weight) {
+    auto atScattering = [&](Vec3 at, Vec3 weight, ClosestStack& stack) {
         scattered = true;
-        inside += weight * lightInsideMedium(scene, hit.object, at, m.scatteringDistance, pointOnly, strata, rng, rays);
+        inside += weight * lightInsideMedium(scene, hit.object, at, m.scatteringDistance, pointOnly, strata, rng,
+                                             stack, rays);
     };
     Ray last;
     Vec3 weight;
