@@ -25,26 +25,31 @@ TRAZO_HD uint32_t reverseBits32(uint32_t x) {
 #endif
 }
 
-// The first two Sobol dimensions of point i: van der Corput's radical inverse and the sequence of the
-// polynomial x + 1 (direction numbers v_k = v_{k−1} ^ v_{k−1} >> 1).
-TRAZO_HD uint32_t sobolFirst(uint32_t i) { return reverseBits32(i); }
-TRAZO_HD uint32_t sobolSecond(uint32_t i) {
-    uint32_t r = 0;
-    for (uint32_t v = 0x80000000u; i != 0; i >>= 1, v ^= v >> 1)
-        if (i & 1u) r ^= v;
-    return r;
-}
-
-// Owen's nested uniform scramble of 32 bits (Laine and Karras's hash, on the reversed bits so that each bit is
-// flipped by a function of the bits above it): keeps a (0,2)-sequence's stratification, randomises its points.
-TRAZO_HD uint32_t owenScramble(uint32_t x, uint32_t seed) {
-    x = reverseBits32(x);
+// Laine and Karras's hash: each bit of x flipped by a function of the bits below it and the seed.
+TRAZO_HD uint32_t laineKarras(uint32_t x, uint32_t seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
-    return reverseBits32(x);
+    return x;
+}
+
+// Owen's nested uniform scramble of the 32 bits of a point in [0, 1) (the hash on its reversed bits, so that
+// each bit is flipped by a function of the bits above it): keeps a (0,2)-sequence's stratification and
+// randomises its points. Points are kept bit-reversed until here: the first Sobol dimension reversed is the
+// index itself, and the reversal that the scramble would undo is not done.
+TRAZO_HD uint32_t owenScrambleReversed(uint32_t reversed, uint32_t seed) {
+    return reverseBits32(laineKarras(reversed, seed));
+}
+
+// The second Sobol dimension of point i (the polynomial x + 1), its bits reversed: direction numbers
+// v_k = v_{k−1} ^ v_{k−1} << 1 from v_0 = 1.
+TRAZO_HD uint32_t sobolSecondReversed(uint32_t i) {
+    uint32_t r = 0;
+    for (uint32_t v = 1u; i != 0; i >>= 1, v ^= v << 1)
+        if (i & 1u) r ^= v;
+    return r;
 }
 
 // Dimensions of a path: the pixel position, then per vertex the light's choice, its point, the BSDF's lobe and
@@ -69,15 +74,17 @@ struct PathSampler {
     // Each dimension pair visits the sequence in its own order (Burley's shuffle: the index Owen-scrambled,
     // which keeps every power-of-two prefix a (0,m,2)-net): with one order for all, the pairs' values would share
     // their leading bits pass by pass, up to a fixed flip, and correlate.
-    TRAZO_HD uint32_t shuffled(uint32_t dimension) const { return owenScramble(index, hashCombine(key, 3u * dimension)); }
+    TRAZO_HD uint32_t shuffled(uint32_t dimension) const {
+        return reverseBits32(laineKarras(reverseBits32(index), hashCombine(key, 3u * dimension)));
+    }
 
     TRAZO_HD float get1D(uint32_t dimension) const {
-        return bitsToUnitFloat(owenScramble(sobolFirst(shuffled(dimension)), hashCombine(key, 3u * dimension + 1u)));
+        return bitsToUnitFloat(owenScrambleReversed(shuffled(dimension), hashCombine(key, 3u * dimension + 1u)));
     }
     TRAZO_HD void get2D(uint32_t dimension, float& a, float& b) const {
         const uint32_t i = shuffled(dimension);
-        a = bitsToUnitFloat(owenScramble(sobolFirst(i), hashCombine(key, 3u * dimension + 1u)));
-        b = bitsToUnitFloat(owenScramble(sobolSecond(i), hashCombine(key, 3u * dimension + 2u)));
+        a = bitsToUnitFloat(owenScrambleReversed(i, hashCombine(key, 3u * dimension + 1u)));
+        b = bitsToUnitFloat(owenScrambleReversed(sobolSecondReversed(i), hashCombine(key, 3u * dimension + 2u)));
     }
 };
 
