@@ -20,7 +20,7 @@ constexpr uint32_t kRouletteStart = 3;
 struct PathState {
     Vec3 radiance{0.0f};  // gathered so far
     Vec3 beta{1.0f};      // throughput: the product of f·|cos|/pdf so far
-    float bsdfPdf = 0.0f; // the density of the last scattering's direction (for MIS at the light it finds)
+    float bsdfPdf = 0.0f;  // the density of the last scattering's direction (for MIS at the light it finds)
     bool delta = true;    // the last direction could not have been found by a light sample (camera, mirror, walk)
     int channel = -1;     // the one colour channel a dispersing path carries (SPEC §6), −1 none yet
     bool lightSampled = false;  // the light the next ray finds was sampled at every point it could come from
@@ -36,8 +36,8 @@ TRAZO_HD float foundLightWeight(const RenderSettings& s, const PathState& path, 
 
 // Whether the BSDF has a lobe a light sample can meet (not only mirrors, sharp glass and the subsurface walk).
 TRAZO_HD bool hasSmoothLobe(const Bsdf& b) {
-    return (b.pick[0] > 0.0f && !b.subsurface) || b.pick[1] > 0.0f || (b.pick[2] > 0.0f && b.reflectionHalfAngle > 0.0f) ||
-           (b.pick[3] > 0.0f && b.refractionHalfAngle > 0.0f);
+    return (b.pick[0] > 0.0f && !b.subsurface) || b.pick[1] > 0.0f ||
+           (b.pick[2] > 0.0f && b.reflectionHalfAngle > 0.0f) || (b.pick[3] > 0.0f && b.refractionHalfAngle > 0.0f);
 }
 
 // Next-event estimation at sp: one light chosen uniformly, one sample of it, its shadow ray. pointOnly: among
@@ -97,11 +97,10 @@ TRAZO_HD Vec3 lightInsideMedium(const SceneView& scene, uint32_t object, Vec3 at
     const LightSample ls = sampleLightAt(scene, index, at, strata, u1, u2, areaLight);
     if (!(ls.pdf > 0.0f) || maxComponent(ls.radiance) <= 0.0f) return Vec3(0.0f);
     const Ray toLight{at, ls.wi};
-    SurfaceHit surface;
     ShapeHit shape;
     ++rays;
     if (!intersectObject(scene, scene.objects[object], toLight, ls.distance, stack, shape)) return Vec3(0.0f);
-    surface = SurfaceHit{shape.t, shape.normal, object, 0, shape.triangle, shape.b1, shape.b2};
+    const SurfaceHit surface{shape.t, shape.normal, object, 0, shape.triangle, shape.b1, shape.b2};
     MaterialData m;
     const ShadingPoint exit = shadingPointAt(scene, toLight, surface, m);
     const Ray shadow{exit.rayOrigin(ls.wi), ls.wi};
