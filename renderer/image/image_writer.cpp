@@ -129,8 +129,6 @@ bool imageFormatFromPath(const std::string& path, ImageFormat& format) {
     return true;
 }
 
-bool storesFloats(ImageFormat format) { return formatInfo(format).isFloat; }
-
 std::string unknownImageFormatReason(const std::string& path) {
     return "'" + path + "': unknown image extension '" + fs::path(path).extension().string() +
            "' (use .png, .bmp, .jpg, .jpeg, .tga, .exr, .hdr or .pfm)";

@@ -30,7 +30,5 @@ std::string unknownImageFormatReason(const std::string& path);
 // unwritable folder, FreeImage or disk failure).
 bool writeImage(const std::string& path, int width, int height, const std::vector<Vec3>& rgbTopDown,
                 std::string& error, const DisplayTransform& display = {});
-// Whether `format` stores floats (linear: the view transform does not apply) rather than 8-bit channels.
-bool storesFloats(ImageFormat format);
 
 }  // namespace trazo
