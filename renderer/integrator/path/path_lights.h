@@ -42,6 +42,20 @@ TRAZO_HD LightSample sampleLightAt(const SceneView& scene, uint32_t index, Vec3 
     return sampleEnvironment(scene, u1, u2);
 }
 
+// One light chosen uniformly by u (among the point lights alone when pointOnly) and a sample of it from p, its
+// density including the choice; a zero pdf where it carries nothing. areaLight: the light's index, or kNoObject.
+TRAZO_HD LightSample chooseLightSample(const SceneView& scene, bool pointOnly, Vec3 p, const StrataKey& vertexStrata,
+                                       float u, float u1, float u2, uint32_t& areaLight) {
+    const uint32_t count = pointOnly ? scene.pointLights.count : sampledLightCount(scene);
+    areaLight = kNoObject;
+    if (count == 0) return noLightSample();
+    const uint32_t index = minOf(uint32_t(u * float(count)), count - 1);
+    LightSample ls = sampleLightAt(scene, index, p, vertexStrata, u1, u2, areaLight);
+    if (!(ls.pdf > 0.0f) || maxComponent(ls.radiance) <= 0.0f) return noLightSample();
+    ls.pdf /= float(count);
+    return ls;
+}
+
 // True when something opaque lies on the ray within (0, tMax): an object, or under SPEC §7 an area light's
 // rectangle (black and opaque from both sides) other than `skipLight`, the one the ray is aimed at.
 TRAZO_HD bool pathOccluded(const SceneView& scene, const Ray& ray, float tMax, uint32_t skipLight) {

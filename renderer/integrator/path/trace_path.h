@@ -45,25 +45,20 @@ TRAZO_HD bool hasSmoothLobe(const Bsdf& b) {
 TRAZO_HD Vec3 sampleOneLight(const SceneView& scene, const ShadingPoint& sp, const Bsdf& bsdf, bool pointOnly,
                              const StrataKey& vertexStrata, const PathSampler& sampler, uint32_t vertex,
                              uint32_t& rays) {
-    const uint32_t count = pointOnly ? scene.pointLights.count : sampledLightCount(scene);
     const float u = sampler.get1D(lightChoiceDimension(vertex));
     float u1, u2;
     sampler.get2D(lightPointDimension(vertex), u1, u2);
-    if (count == 0) return Vec3(0.0f);
-    const uint32_t index = minOf(uint32_t(u * float(count)), count - 1);
     uint32_t areaLight;
-    const LightSample ls = sampleLightAt(scene, index, sp.p, vertexStrata, u1, u2, areaLight);
-    if (!(ls.pdf > 0.0f) || maxComponent(ls.radiance) <= 0.0f) return Vec3(0.0f);
+    const LightSample ls = chooseLightSample(scene, pointOnly, sp.p, vertexStrata, u, u1, u2, areaLight);
+    if (!(ls.pdf > 0.0f)) return Vec3(0.0f);
     const Vec3 f = bsdf.evalCos(sp.v, ls.wi);
     if (maxComponent(f) <= 0.0f) return Vec3(0.0f);
     const Ray shadow{sp.rayOrigin(ls.wi), ls.wi};
     ++rays;
     if (pathOccluded(scene, shadow, ls.distance * (1.0f - 1e-4f), areaLight)) return Vec3(0.0f);
-    const float choice = 1.0f / float(count);
-    const float lightPdf = choice * ls.pdf;
     const bool weighted = !ls.delta && scene.settings.lightSampling == LightSampling::Mis;
-    const float w = weighted ? powerHeuristic(lightPdf, bsdf.pdf(sp.v, ls.wi)) : 1.0f;
-    return f * ls.radiance * (w / lightPdf);
+    const float w = weighted ? powerHeuristic(ls.pdf, bsdf.pdf(sp.v, ls.wi)) : 1.0f;
+    return f * ls.radiance * (w / ls.pdf);
 }
 
 // The BSDF of SPEC §7 at a hit: the material's, with the path's dispersion channel (drawn at its first dispersing
@@ -89,13 +84,10 @@ TRAZO_HD Bsdf pathBsdf(const MaterialData& m, const ShadingPoint& sp, bool enter
 // with the isotropic phase function 1/4π. The walk's own exits then find no light that this samples.
 TRAZO_HD Vec3 lightInsideMedium(const SceneView& scene, uint32_t object, Vec3 at, Vec3 d, bool pointOnly,
                                 const StrataKey& strata, SampleStream& rng, ClosestStack& stack, uint32_t& rays) {
-    const uint32_t count = pointOnly ? scene.pointLights.count : sampledLightCount(scene);
     const float u = rng.next(), u1 = rng.next(), u2 = rng.next();
-    if (count == 0) return Vec3(0.0f);
-    const uint32_t index = minOf(uint32_t(u * float(count)), count - 1);
     uint32_t areaLight;
-    const LightSample ls = sampleLightAt(scene, index, at, strata, u1, u2, areaLight);
-    if (!(ls.pdf > 0.0f) || maxComponent(ls.radiance) <= 0.0f) return Vec3(0.0f);
+    const LightSample ls = chooseLightSample(scene, pointOnly, at, strata, u, u1, u2, areaLight);
+    if (!(ls.pdf > 0.0f)) return Vec3(0.0f);
     const Ray toLight{at, ls.wi};
     ShapeHit shape;
     ++rays;
@@ -107,7 +99,7 @@ TRAZO_HD Vec3 lightInsideMedium(const SceneView& scene, uint32_t object, Vec3 at
     ++rays;
     if (pathOccluded(scene, shadow, (ls.distance - shape.t) * (1.0f - 1e-4f), areaLight)) return Vec3(0.0f);
     const Vec3 transmittance = freePathDensity(d, shape.t, false);
-    return transmittance * ls.radiance * (float(count) / (4.0f * kPi * ls.pdf));
+    return transmittance * ls.radiance / (4.0f * kPi * ls.pdf);
 }
 
 // The path after a subsurface walk from sp (SPEC §7): the ray leaving where the walk first crosses the object's
@@ -143,7 +135,7 @@ TRAZO_HD bool leaveAfterWalk(const SceneView& scene, const SurfaceHit& hit, cons
     return true;
 }
 
-// pixelStrata: the pixel's strata in this pass; each vertex of the path draws its own (node = its depth). sampler:
+// pixelStrata: the pixel's strata in this pass; each vertex of the path draws its own (its child by depth). sampler:
 // the pass's point of the pixel's sequence (light and BSDF samples); rng: the other draws (roulette, walks).
 TRAZO_HD Vec3 tracePath(const SceneView& scene, Ray ray, const StrataKey& pixelStrata, const PathSampler& sampler,
                         SampleStream& rng, uint32_t& rays) {
@@ -173,11 +165,11 @@ TRAZO_HD Vec3 tracePath(const SceneView& scene, Ray ray, const StrataKey& pixelS
 
         const bool entering = dot(ray.direction, hit.normal) < 0.0f;
         const Bsdf bsdf = pathBsdf(m, sp, entering, path, rng);
-        const StrataKey vertexStrata{pixelStrata.seed, pixelStrata.pixelIndex, pixelStrata.pass,
-                                     kSampleTreeRoot + scatterings};
+        const StrataKey vertexStrata = pixelStrata.child(scatterings);
         if (hasSmoothLobe(bsdf)) {  // point lights are sampled whatever LightSampling says: no ray finds them
             const bool pointOnly = s.lightSampling == LightSampling::Bsdf;
-            path.radiance += path.beta * sampleOneLight(scene, sp, bsdf, pointOnly, vertexStrata, sampler, scatterings, rays);
+            path.radiance +=
+                path.beta * sampleOneLight(scene, sp, bsdf, pointOnly, vertexStrata, sampler, scatterings, rays);
         }
 
         const float uLobe = sampler.get1D(lobeDimension(scatterings));
