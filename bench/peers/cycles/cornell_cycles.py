@@ -80,11 +80,16 @@ def mesh_object(name, quads, material):
     return obj
 
 
-def diffuse_material(name, rgb):
+def empty_node_material(name):
+    """A material with an empty node tree, and the tree."""
     mat = bpy.data.materials.new(name)
     mat.use_nodes = True
-    nt = mat.node_tree
-    nt.nodes.clear()
+    mat.node_tree.nodes.clear()
+    return mat, mat.node_tree
+
+
+def diffuse_material(name, rgb):
+    mat, nt = empty_node_material(name)
     bsdf = nt.nodes.new("ShaderNodeBsdfDiffuse")
     bsdf.inputs["Color"].default_value = (*rgb, 1.0)
     bsdf.inputs["Roughness"].default_value = 0.0  # Lambert (Oren-Nayar with sigma 0)
@@ -97,10 +102,7 @@ def emitter_material(name, rgb):
     # Cycles' mesh emission is radiance Strength x Color (no 1/pi) from both faces; the Geometry node's
     # Backfacing output masks the back face, so this is a one-sided emitter, black and opaque (no BSDF:
     # a path that hits it ends), as SPEC §7 defines Trazo's AreaLight.
-    mat = bpy.data.materials.new(name)
-    mat.use_nodes = True
-    nt = mat.node_tree
-    nt.nodes.clear()
+    mat, nt = empty_node_material(name)
     emission = nt.nodes.new("ShaderNodeEmission")
     emission.inputs["Color"].default_value = (*rgb, 1.0)
     emission.inputs["Strength"].default_value = 1.0
