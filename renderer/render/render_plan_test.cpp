@@ -39,6 +39,21 @@ TEST(RenderPlan, DefaultsAreTheScenesSizeAndOneCameraPathCycle) {
     EXPECT_TRUE(plan.note.empty());  // 512² of scene 1 is far from a long render
 }
 
+// SPEC §7's path tracer: one stratum of each grid a pass, and by default the fewest whole cycles of its grids
+// (antialiasing cells, lens, each area light's Subdivision) that reach kPathDefaultPasses.
+TEST(RenderPlan, PathScenesTakeWholeCyclesOfAtLeast64Passes) {
+    PlannedScene s = load("cornell_box.scene");  // Subdivision 1 1, one antialiasing position, a pinhole
+    ASSERT_EQ(s.flat.arrays.settings.integrator, IntegratorKind::Path);
+    RenderPlan plan = planRender(RenderRequest{}, s.scene, s.flat.arrays);
+    EXPECT_EQ(plan.blocks, StrataBlocks::ones());
+    EXPECT_EQ(plan.range, (PassRange{0, kPathDefaultPasses}));
+    s.flat.arrays.areaLights.at(0).cellsU = 5;
+    s.flat.arrays.areaLights.at(0).cellsV = 5;  // a cycle of 25: three of them
+    plan = planRender(RenderRequest{}, s.scene, s.flat.arrays);
+    EXPECT_EQ(plan.fullCycle, 25u);
+    EXPECT_EQ(plan.range, (PassRange{0, 75}));
+}
+
 TEST(RenderPlan, SizeBlocksAndPassesAsAsked) {
     const PlannedScene s = load("scene1_area.scene");
     RenderRequest r;
